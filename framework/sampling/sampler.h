@@ -1,0 +1,69 @@
+// Samplers: a sample value is a pure function of (pixel, sample index, dimension, seed), so an
+// image does not depend on thread count, tile order or how many passes it took.
+//
+// Dimensions are consumed in a fixed order by every integrator: 0-1 place the sample in the pixel,
+// then each stage takes the next ones (4D AO takes 2-3 for its AO direction).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/math.h"
+
+namespace pathway {
+
+enum class SamplerType {
+  Independent,  // PCG32 random numbers, seeded by a hash of (pixel, index, dimension pair, seed)
+  Stratified,   // jittered strata per pair of dimensions, strata shuffled per pixel and pair
+  Sobol,        // Owen-scrambled Sobol' (Joe-Kuo direction numbers), hash-based nested scrambling
+};
+
+// "independent", "stratified", "sobol"; throws PathwayError naming the valid choices otherwise.
+SamplerType parseSamplerType(const std::string& name);
+std::string samplerTypeName(SamplerType type);
+std::vector<std::string> samplerTypeNames();
+
+class Sampler {
+ public:
+  // `samplesPerPixel` is the planned total; the stratified sampler sizes its strata from it.
+  // Indices past it stay valid and unbiased (they are simply not stratified against the rest).
+  Sampler(SamplerType type, uint32_t samplesPerPixel, uint64_t seed);
+
+  // The sample value in [0, 1) of `dimension` for sample `index` of `pixel`.
+  float get(uint32_t pixelX, uint32_t pixelY, uint32_t index, uint32_t dimension) const;
+
+  SamplerType type() const { return type_; }
+  uint32_t samplesPerPixel() const { return samplesPerPixel_; }
+  uint64_t seed() const { return seed_; }
+
+ private:
+  SamplerType type_;
+  uint32_t samplesPerPixel_;
+  uint64_t seed_;
+  uint32_t strataX_, strataY_;  // stratified: strata per dimension pair
+};
+
+// Walks the dimensions of one camera sample in order. Integrators take their numbers from here.
+class SampleStream {
+ public:
+  SampleStream(const Sampler& sampler, uint32_t pixelX, uint32_t pixelY, uint32_t index)
+      : sampler_(&sampler), pixelX_(pixelX), pixelY_(pixelY), index_(index) {}
+
+  float next1D() { return sampler_->get(pixelX_, pixelY_, index_, dimension_++); }
+  Vec2 next2D() {
+    // Pairs start on even dimensions, so a pair is always one stratified/Sobol' 2D projection.
+    if (dimension_ % 2 == 1) ++dimension_;
+    const float u = next1D();
+    const float v = next1D();
+    return Vec2(u, v);
+  }
+  uint32_t dimension() const { return dimension_; }
+
+ private:
+  const Sampler* sampler_;
+  uint32_t pixelX_, pixelY_, index_;
+  uint32_t dimension_ = 0;
+};
+
+}  // namespace pathway
