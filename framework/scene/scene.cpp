@@ -6,6 +6,9 @@ namespace pathway {
 
 Color Texture::lookup(Vec2 uv) const {
   if (width <= 0 || height <= 0) return Color(1.0f);
+  // Wrapping first keeps the integer texel coordinates below from overflowing for huge uv.
+  uv -= glm::floor(uv);
+  if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) uv = Vec2(0.0f);
   // Texel centres sit at half-integer coordinates.
   const float x = uv.x * width - 0.5f;
   const float y = uv.y * height - 0.5f;

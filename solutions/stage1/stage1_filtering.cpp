@@ -1,1 +1,72 @@
-namespace {}
+// Stage 1 - filtered supersampling (reference solution).
+//
+// A pixel is not a point sample: pixel j's value is the image radiance L weighted by a filter f
+// centred on the pixel,
+//     I_j = ∫ f(x - x_j, y - y_j) L(x, y) dx dy  /  ∫ f(x - x_j, y - y_j) dx dy.
+// We estimate numerator and denominator with the SAME samples: every sample adds f_j·L and f_j to
+// every pixel j whose filter reaches it, and the film divides the two sums at the end. Normalising
+// numerically like this makes a constant image come back exactly constant, whatever the filter's
+// own integral and wherever the samples fell.
+//
+// Your part: the four filter profiles and the splat. The shading (albedo lit from the eye) is
+// given by the framework: it has no noise of its own, so what you see is the pixel integral.
+#include <algorithm>
+#include <cmath>
+
+#include "render/eye_light_integrator.h"
+#include "render/stage_api.h"
+
+namespace pathway {
+namespace {
+
+// ---- 1D filter profiles, on their natural support; the 2D filter is f(x)·f(y). ----
+
+float boxFilter(float x) { return std::fabs(x) <= 0.5f ? 1.0f : 0.0f; }
+
+float tentFilter(float x) { return std::max(0.0f, 1.0f - std::fabs(x)); }
+
+// Mitchell-Netravali with B = C = 1/3: a cubic that is sharper than the tent and rings less than
+// sinc. Its negative lobes (1 < |x| < 2) are why Σ f can be close to 0 at low sample counts.
+float mitchellNetravaliFilter(float x) {
+  const float a = std::fabs(x);
+  if (a < 1.0f) return (7.0f * a * a * a - 12.0f * a * a + 16.0f / 3.0f) / 6.0f;
+  if (a <= 2.0f) return (-7.0f / 3.0f * a * a * a + 12.0f * a * a - 20.0f * a + 32.0f / 3.0f) / 6.0f;
+  return 0.0f;
+}
+
+// Unnormalised Gaussian, cut at 3σ. The film's division by Σ f makes the missing tail harmless.
+float gaussianFilter(float x, float sigma) {
+  if (std::fabs(x) > 3.0f * sigma) return 0.0f;
+  return std::exp(-x * x / (2.0f * sigma * sigma));
+}
+
+// ---- The splat: one sample at film position p (pixels) with radiance L. ----
+void splat(FilmBlock& film, Vec2 p, const Color& radiance, const PixelFilter& filter) {
+  // Pixel j covers [j, j+1), so its centre is at j + 0.5; it is in reach when
+  // |p - (j + 0.5)| <= radius, i.e. j in [p - 0.5 - radius, p - 0.5 + radius].
+  const float r = filter.radius();
+  const int xFirst = static_cast<int>(std::ceil(p.x - 0.5f - r));
+  const int xLast = static_cast<int>(std::floor(p.x - 0.5f + r));
+  const int yFirst = static_cast<int>(std::ceil(p.y - 0.5f - r));
+  const int yLast = static_cast<int>(std::floor(p.y - 0.5f + r));
+  for (int y = yFirst; y <= yLast; ++y) {
+    for (int x = xFirst; x <= xLast; ++x) {
+      const float weight = filter.evaluate(p.x - (x + 0.5f), p.y - (y + 0.5f));
+      // Numerator (f·L) and denominator (f) from the same sample: the film adds both.
+      if (weight != 0.0f) film.addSample(x, y, weight, radiance);
+    }
+  }
+}
+
+const bool registered = [] {
+  registerFilterFunctions(PATHWAY_THIS_VARIANT, {boxFilter, tentFilter, mitchellNetravaliFilter,
+                                                 gaussianFilter, splat});
+  return registerIntegrator({variantIntegratorName("stage1", PATHWAY_THIS_VARIANT), 1,
+                             PATHWAY_THIS_VARIANT,
+                             "filtered supersampling: pixel filters and the splat, eye-light shading",
+                             {},
+                             [](const ParamValues&) { return std::make_unique<EyeLightIntegrator>(); }});
+}();
+
+}  // namespace
+}  // namespace pathway

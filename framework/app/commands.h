@@ -1,0 +1,16 @@
+// The subcommands of the `pathway` program. Each adds itself to the CLI11 app and runs when chosen.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace pathway {
+
+struct Command {
+  CLI::App* app;            // the parsed subcommand
+  std::function<int()> run;  // runs it; returns the exit status; throws PathwayError on bad input
+};
+
+Command addRenderCommand(CLI::App& app);
+
+}  // namespace pathway

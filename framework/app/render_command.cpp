@@ -1,0 +1,169 @@
+// `pathway render [scene] [options]`: render a scene with one integrator and write EXR and/or PNG.
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "app/commands.h"
+#include "app/progress_bar.h"
+#include "core/error.h"
+#include "render/render_job.h"
+#include "scene/gltf_loader.h"
+
+namespace pathway {
+namespace {
+
+struct RenderOptions {
+  std::string scene = PATHWAY_DEFAULT_SCENE;
+  std::string integrator = "stage1";
+  std::vector<std::string> params;
+  std::vector<std::string> outputs = {"render.png"};
+  int width = 512;
+  int height = 0;  // 0: from the scene camera's aspect ratio, else square
+  uint32_t spp = 16;
+  std::string sampler = "independent";
+  uint64_t seed = 0;
+  int threads = 0;
+  std::string filter = "box";
+  float filterRadius = 0.0f;
+  float exposure = 0.0f;
+  bool list = false;
+  bool quiet = false;
+};
+
+void listIntegrators() {
+  std::printf("Integrators (choose with --integrator NAME, set parameters with -p name=value):\n");
+  for (const IntegratorInfo* info : allIntegrators()) {
+    std::printf("\n  %-12s stage %d, %s: %s\n", info->name.c_str(), info->stage,
+                variantName(info->variant), info->summary.c_str());
+    for (const ParamSpec& spec : info->params)
+      std::printf("      %-16s %s (default %s, range [%s, %s])\n", spec.name.c_str(),
+                  spec.help.c_str(), formatParamValue(spec, spec.defaultValue).c_str(),
+                  formatParamValue(spec, spec.minValue).c_str(),
+                  formatParamValue(spec, spec.maxValue).c_str());
+  }
+}
+
+int run(const RenderOptions& options) {
+  if (options.list) {
+    listIntegrators();
+    return 0;
+  }
+  // Check everything that can be checked before the scene is loaded and rendering starts.
+  RenderRequest request;
+  request.integrator = options.integrator;
+  const IntegratorInfo& info = findIntegrator(options.integrator);
+  for (const std::string& assignment : options.params) {
+    const auto [name, value] = splitParamAssignment(assignment);
+    request.params[name] = value;
+  }
+  resolveParams(info.name, info.params, request.params);
+  RenderSettings& s = request.settings;
+  s.sampler = parseSamplerType(options.sampler);
+  s.filter = parseFilterType(options.filter);
+  s.filterRadius = options.filterRadius;
+  s.samplesPerPixel = options.spp;
+  s.seed = options.seed;
+  s.threads = options.threads;
+  // Passes of about a second's worth keep the progress bar moving without slowing the render.
+  s.samplesPerPass = std::max(1u, options.spp / 16);
+  for (const std::string& output : options.outputs) checkImagePath(output);
+
+  const Scene scene = loadScene(options.scene);
+  s.width = options.width;
+  s.height = options.height;
+  if (s.height == 0) {
+    const float aspect = scene.camera && scene.camera->aspectRatio ? *scene.camera->aspectRatio : 1.0f;
+    s.height = std::max(1, static_cast<int>(std::lround(options.width / aspect)));
+  }
+  const RayTracer tracer(scene);
+
+  ProgressBar progress(!options.quiet);
+  const RenderResult result = runRender(scene, tracer, request, [&](const RenderStats& stats) {
+    const std::string label = std::to_string(stats.samplesPerPixel) + "/" +
+                              std::to_string(s.samplesPerPixel) + " spp";
+    progress.update(static_cast<double>(stats.samplesPerPixel) / s.samplesPerPixel, label.c_str());
+  });
+  progress.finish();
+
+  for (const std::string& output : options.outputs)
+    writeImageFile(output, result.images, result.metadata, options.exposure);
+
+  const RayCounters& c = result.stats.counters;
+  const double seconds = result.stats.seconds;
+  if (!options.quiet) {
+    std::printf("%s: %s, %dx%d, %u spp, %.3f s\n", options.scene.c_str(), info.name.c_str(), s.width,
+                s.height, result.stats.samplesPerPixel, seconds);
+    std::printf("rays: %llu primary, %llu secondary, %llu shadow; %.2f M rays/s\n",
+                static_cast<unsigned long long>(c.primary),
+                static_cast<unsigned long long>(c.secondary),
+                static_cast<unsigned long long>(c.shadow), c.totalRays() / seconds * 1e-6);
+  }
+  if (c.invalidSamples > 0)
+    std::fprintf(stderr, "pathway: warning: %llu non-finite samples were dropped\n",
+                 static_cast<unsigned long long>(c.invalidSamples));
+  if (result.unresolvedPixels > 0)
+    std::fprintf(stderr,
+                 "pathway: warning: %zu pixels have filter weights summing to about 0 "
+                 "(negative lobes at low spp); they are written as 0\n",
+                 result.unresolvedPixels);
+  if (!result.todos.empty())
+    std::fprintf(stderr, "pathway: note: %zu TODO(s) in the stage code ran; this image uses "
+                 "placeholders\n", result.todos.size());
+  for (const std::string& output : options.outputs) std::printf("wrote %s\n", output.c_str());
+  return 0;
+}
+
+}  // namespace
+
+Command addRenderCommand(CLI::App& app) {
+  auto options = std::make_shared<RenderOptions>();
+  CLI::App* render = app.add_subcommand("render", "Render a scene to an image file");
+  render->footer(
+      "Examples:\n"
+      "  pathway render --list                          integrators and their parameters\n"
+      "  pathway render scenes/cornell_box.gltf -o box.png\n"
+      "  pathway render scenes/cornell_box.gltf -i stage1@ref --filter mitchell --spp 4 -o a.exr\n"
+      "  pathway render scenes/cornell_box.gltf -i stage2 -p ao-rays=4 -p ao-distance=0.3");
+  render->add_option("scene", options->scene, "glTF 2.0 scene (.gltf or .glb)")
+      ->capture_default_str();
+  render->add_option("-i,--integrator", options->integrator,
+                     "Integrator by name: stageN is yours, stageN@ref the reference")
+      ->capture_default_str();
+  render->add_option("-p,--param", options->params,
+                     "Integrator parameter name=value (repeatable; see --list)");
+  render->add_option("-o,--output", options->outputs,
+                     "Output file(s): .exr (linear, variance, metadata) or .png (sRGB)")
+      ->capture_default_str();
+  render->add_option("--spp", options->spp, "Samples per pixel")
+      ->check(CLI::Range(1u, 1u << 20))
+      ->capture_default_str();
+  render->add_option("--width", options->width, "Image width in pixels")
+      ->check(CLI::Range(1, 16384))
+      ->capture_default_str();
+  render->add_option("--height", options->height,
+                     "Image height in pixels (default: from the camera's aspect ratio)")
+      ->check(CLI::Range(1, 16384));
+  render->add_option("--sampler", options->sampler, "independent, stratified or sobol")
+      ->capture_default_str();
+  render->add_option("--seed", options->seed, "Random seed; same seed, same image")
+      ->capture_default_str();
+  render->add_option("--threads", options->threads, "Worker threads (0: all cores)")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
+  render->add_option("--filter", options->filter, "Pixel filter: box, tent, mitchell, gaussian")
+      ->capture_default_str();
+  render->add_option("--filter-radius", options->filterRadius,
+                     "Filter support in pixels (default: box 0.5, tent 1, mitchell 2, gaussian 1.5)")
+      ->check(CLI::Range(0.0f, 16.0f));
+  render->add_option("--exposure", options->exposure, "PNG exposure in stops (EXR is never scaled)")
+      ->check(CLI::Range(-20.0f, 20.0f))
+      ->capture_default_str();
+  render->add_flag("--list", options->list, "List the integrators and their parameters, then exit");
+  render->add_flag("-q,--quiet", options->quiet, "No progress bar or summary");
+  return {render, [options] { return run(*options); }};
+}
+
+}  // namespace pathway

@@ -1,0 +1,102 @@
+#include "film/film.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pathway {
+namespace {
+
+// |Σw| below this fraction of Σ|w| means the positive and negative filter lobes cancelled.
+constexpr double kUnresolvedWeightFraction = 1e-6;
+
+bool isResolved(const PixelSums& p) {
+  return p.absWeight > 0.0 && std::fabs(p.weight) > kUnresolvedWeightFraction * p.absWeight;
+}
+
+}  // namespace
+
+void PixelSums::add(double w, const glm::dvec3& radiance) {
+  if (w == 0.0) return;
+  weightedRadiance += w * radiance;
+  weight += w;
+  absWeight += std::fabs(w);
+  squaredWeightRadiance += (w * w) * radiance;
+  squaredWeightRadiance2 += (w * w) * radiance * radiance;
+  squaredWeight += w * w;
+  ++sampleCount;
+}
+
+PixelSums& PixelSums::operator+=(const PixelSums& o) {
+  weightedRadiance += o.weightedRadiance;
+  weight += o.weight;
+  absWeight += o.absWeight;
+  squaredWeightRadiance += o.squaredWeightRadiance;
+  squaredWeightRadiance2 += o.squaredWeightRadiance2;
+  squaredWeight += o.squaredWeight;
+  sampleCount += o.sampleCount;
+  return *this;
+}
+
+FilmBlock::FilmBlock(int imageWidth, int imageHeight, int x0, int y0, int width, int height)
+    : imageWidth_(imageWidth), imageHeight_(imageHeight) {
+  x0_ = std::max(0, x0);
+  y0_ = std::max(0, y0);
+  width_ = std::max(0, std::min(imageWidth, x0 + width) - x0_);
+  height_ = std::max(0, std::min(imageHeight, y0 + height) - y0_);
+  sums_.resize(static_cast<size_t>(width_) * height_);
+}
+
+void FilmBlock::addSample(int x, int y, float weight, const Color& radiance) {
+  if (x < x0_ || y < y0_ || x >= x0_ + width_ || y >= y0_ + height_) return;
+  sums_[static_cast<size_t>(y - y0_) * width_ + (x - x0_)].add(weight, glm::dvec3(radiance));
+}
+
+void FilmBlock::clear() { std::fill(sums_.begin(), sums_.end(), PixelSums{}); }
+
+Film::Film(int width, int height)
+    : width_(width), height_(height), sums_(static_cast<size_t>(width) * height) {}
+
+void Film::merge(const FilmBlock& block) {
+  for (int y = block.y0(); y < block.y0() + block.height(); ++y)
+    for (int x = block.x0(); x < block.x0() + block.width(); ++x)
+      sums_[static_cast<size_t>(y) * width_ + x] += block.at(x, y);
+}
+
+void Film::clear() { std::fill(sums_.begin(), sums_.end(), PixelSums{}); }
+
+Image Film::develop(size_t* unresolvedPixels) const {
+  Image image(width_, height_);
+  size_t unresolved = 0;
+  for (size_t i = 0; i < sums_.size(); ++i) {
+    const PixelSums& p = sums_[i];
+    if (isResolved(p)) {
+      image.pixels[i] = Color(p.weightedRadiance / p.weight);
+    } else if (p.absWeight > 0.0) {
+      ++unresolved;
+    }
+  }
+  if (unresolvedPixels) *unresolvedPixels = unresolved;
+  return image;
+}
+
+Image Film::variance() const {
+  Image image(width_, height_);
+  for (size_t i = 0; i < sums_.size(); ++i) {
+    const PixelSums& p = sums_[i];
+    if (!isResolved(p)) continue;
+    const glm::dvec3 mean = p.weightedRadiance / p.weight;
+    // Σ w²(L - I)² / (Σ w)², expanded so it can be accumulated sample by sample.
+    const glm::dvec3 spread = p.squaredWeightRadiance2 - 2.0 * mean * p.squaredWeightRadiance +
+                              mean * mean * p.squaredWeight;
+    image.pixels[i] = Color(glm::max(spread, glm::dvec3(0.0)) / (p.weight * p.weight));
+  }
+  return image;
+}
+
+Image Film::weights() const {
+  Image image(width_, height_);
+  for (size_t i = 0; i < sums_.size(); ++i) image.pixels[i] = Color(static_cast<float>(sums_[i].weight));
+  return image;
+}
+
+}  // namespace pathway

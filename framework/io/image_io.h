@@ -1,0 +1,44 @@
+// Image files through OpenImageIO.
+// EXR keeps everything the grader needs: linear RGB, per-pixel variance and filter weight, and the
+// render settings and counters as metadata. PNG is for looking at: exposure, sRGB, 8 bits.
+// Files are written to a temporary name and renamed, so a failed write never leaves a broken file.
+#pragma once
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "film/film.h"
+
+namespace pathway {
+
+using ImageMetadata = std::vector<std::pair<std::string, std::string>>;  // "pathway:<key>", value
+
+struct FilmImages {
+  Image color;
+  Image variance;  // of each pixel's estimate
+  Image weight;    // Σ w (same in every channel)
+};
+
+void writeExr(const std::string& path, const FilmImages& images, const ImageMetadata& metadata);
+// `exposure` in stops: pixel values are scaled by 2^exposure before the sRGB curve.
+void writePng(const std::string& path, const Image& image, float exposure);
+// Picks the format from the extension (.exr or .png); throws PathwayError for anything else.
+void writeImageFile(const std::string& path, const FilmImages& images, const ImageMetadata& metadata,
+                    float exposure);
+
+// Throws PathwayError unless `path` has a known extension and its folder exists, so a render can
+// refuse a bad output path before it starts.
+void checkImagePath(const std::string& path);
+
+struct LoadedImage {
+  FilmImages images;  // variance and weight are empty when the file has no such channels
+  std::map<std::string, std::string> metadata;
+};
+LoadedImage readImageFile(const std::string& path);
+
+// The sRGB transfer curve (linear -> encoded), for values in [0, 1].
+float linearToSrgb(float linear);
+
+}  // namespace pathway

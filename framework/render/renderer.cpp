@@ -1,0 +1,138 @@
+#include "render/renderer.h"
+
+#include <tbb/info.h>
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+#include <cmath>
+
+#include "core/error.h"
+
+namespace pathway {
+
+struct Renderer::Tile {
+  int x0, y0, x1, y1;  // the pixels whose samples this tile draws
+  int mergeClass;      // tiles of one class never overlap, so a class merges in parallel
+  FilmBlock block;     // the tile plus the filter's reach
+  RayCounters counters;
+};
+
+namespace {
+
+const RenderSettings& checked(const RenderSettings& s) {
+  auto require = [](bool ok, const std::string& message) {
+    if (!ok) throw PathwayError(message);
+  };
+  require(s.width >= 1 && s.width <= 16384 && s.height >= 1 && s.height <= 16384,
+          "image size must be between 1x1 and 16384x16384, got " + std::to_string(s.width) + "x" +
+              std::to_string(s.height));
+  require(s.samplesPerPixel >= 1, "samples per pixel must be at least 1");
+  require(s.samplesPerPass >= 1, "samples per pass must be at least 1");
+  require(s.threads >= 0 && s.threads <= 1024, "threads must be 0 (all cores) or 1..1024");
+  require(s.tileSize >= 4 && s.tileSize <= 256, "tile size must be in [4, 256]");
+  return s;
+}
+
+}  // namespace
+
+Renderer::Renderer(const RayTracer& tracer, const Camera& camera, const Integrator& integrator,
+                   const FilterFunctions& filterFunctions, const RenderSettings& settings)
+    : tracer_(tracer),
+      camera_(camera),
+      integrator_(integrator),
+      filterFunctions_(filterFunctions),
+      settings_(checked(settings)),
+      filter_(settings.filter,
+              settings.filterRadius > 0.0f ? settings.filterRadius : naturalFilterRadius(settings.filter),
+              filterFunctions),
+      sampler_(settings.sampler, settings.samplesPerPixel, settings.seed),
+      film_(settings.width, settings.height) {
+  // A sample drawn in pixel i reaches pixels whose centres lie within the filter radius.
+  const int margin = static_cast<int>(std::ceil(filter_.radius())) + 1;
+  const int size = settings_.tileSize;
+  // Same-class tiles are two tiles apart; they cannot overlap if the margin is under a tile.
+  if (2 * margin >= size)
+    throw PathwayError("filter radius " + std::to_string(filter_.radius()) +
+                       " is too wide for tiles of " + std::to_string(size) + " pixels");
+  for (int ty = 0; ty * size < settings_.height; ++ty) {
+    for (int tx = 0; tx * size < settings_.width; ++tx) {
+      Tile tile;
+      tile.x0 = tx * size;
+      tile.y0 = ty * size;
+      tile.x1 = std::min(settings_.width, tile.x0 + size);
+      tile.y1 = std::min(settings_.height, tile.y0 + size);
+      tile.mergeClass = (tx % 2) + 2 * (ty % 2);
+      tile.block = FilmBlock(settings_.width, settings_.height, tile.x0 - margin, tile.y0 - margin,
+                             size + 2 * margin, size + 2 * margin);
+      tiles_.push_back(std::move(tile));
+    }
+  }
+  // More threads than cores would only be refused by TBB (with a warning), so cap them.
+  const int cores = tbb::info::default_concurrency();
+  const int threads = settings_.threads > 0 ? std::min(settings_.threads, cores) : cores;
+  arena_ = std::make_unique<tbb::task_arena>(threads);
+}
+
+Renderer::~Renderer() = default;
+
+void Renderer::renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount) {
+  tile.block.clear();
+  tile.counters = RayCounters{};
+  RenderContext context{tracer_.scene(), tracer_, tile.counters};
+  for (int y = tile.y0; y < tile.y1; ++y) {
+    for (int x = tile.x0; x < tile.x1; ++x) {
+      for (uint32_t index = firstSample; index < firstSample + sampleCount; ++index) {
+        SampleStream samples(sampler_, x, y, index);
+        const Vec2 filmPosition = Vec2(x, y) + samples.next2D();
+        const Color radiance = integrator_.Li(camera_.generateRay(filmPosition), samples, context);
+        if (!isFinite(radiance)) {  // counted and dropped, never written
+          ++tile.counters.invalidSamples;
+          continue;
+        }
+        filterFunctions_.splat(tile.block, filmPosition, radiance, filter_);
+        ++tile.counters.samples;
+      }
+    }
+  }
+}
+
+bool Renderer::renderPass(const std::atomic<bool>* cancel) {
+  if (finished()) return true;
+  const auto start = std::chrono::steady_clock::now();
+  const uint32_t first = stats_.samplesPerPixel;
+  const uint32_t count = std::min(settings_.samplesPerPass, settings_.samplesPerPixel - first);
+  auto cancelled = [cancel] { return cancel && cancel->load(std::memory_order_relaxed); };
+
+  arena_->execute([&] {
+    tbb::parallel_for(size_t(0), tiles_.size(), [&](size_t i) {
+      if (!cancelled()) renderTile(tiles_[i], first, count);
+    });
+  });
+  if (cancelled()) return false;
+
+  // Merge class by class (each class in parallel, its tiles disjoint); every pixel then receives
+  // its contributions in the same order whatever the thread count.
+  arena_->execute([&] {
+    for (int mergeClass = 0; mergeClass < 4; ++mergeClass) {
+      tbb::parallel_for(size_t(0), tiles_.size(), [&](size_t i) {
+        if (tiles_[i].mergeClass == mergeClass) film_.merge(tiles_[i].block);
+      });
+    }
+  });
+  for (const Tile& tile : tiles_) stats_.counters += tile.counters;
+  stats_.samplesPerPixel += count;
+  stats_.seconds +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return true;
+}
+
+bool Renderer::renderAll(const std::function<void(const RenderStats&)>& onPass,
+                         const std::atomic<bool>* cancel) {
+  while (!finished()) {
+    if (!renderPass(cancel)) return false;
+    if (onPass) onPass(stats_);
+  }
+  return true;
+}
+
+}  // namespace pathway

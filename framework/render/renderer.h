@@ -1,0 +1,79 @@
+// The renderer: tiles x passes on TBB. Each pass adds `samplesPerPass` samples to every pixel;
+// each tile splats into its own FilmBlock and the blocks are merged in a fixed order, so the image
+// is bit-identical for any thread count. A render can be cancelled between tiles.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "core/ray_counters.h"
+#include "film/film.h"
+#include "film/pixel_filter.h"
+#include "render/integrator.h"
+#include "sampling/sampler.h"
+#include "scene/camera.h"
+
+#include <tbb/task_arena.h>
+
+namespace pathway {
+
+struct RenderSettings {
+  int width = 512;
+  int height = 512;
+  uint32_t samplesPerPixel = 16;
+  uint32_t samplesPerPass = 1;
+  SamplerType sampler = SamplerType::Independent;
+  uint64_t seed = 0;
+  int threads = 0;  // 0: all cores
+  FilterType filter = FilterType::Box;
+  float filterRadius = 0.0f;  // 0: the filter's natural radius
+  int tileSize = 16;
+};
+
+struct RenderStats {
+  RayCounters counters;
+  double seconds = 0.0;         // wall time spent in passes
+  uint32_t samplesPerPixel = 0;  // done so far
+};
+
+class Renderer {
+ public:
+  Renderer(const RayTracer& tracer, const Camera& camera, const Integrator& integrator,
+           const FilterFunctions& filterFunctions, const RenderSettings& settings);
+  ~Renderer();
+
+  // Renders the next pass. Returns false (and leaves the film as it was before the pass) when
+  // `cancel` became true during it.
+  bool renderPass(const std::atomic<bool>* cancel = nullptr);
+  bool finished() const { return stats_.samplesPerPixel >= settings_.samplesPerPixel; }
+
+  // Renders the remaining passes, calling `onPass` after each. Returns false when cancelled.
+  bool renderAll(const std::function<void(const RenderStats&)>& onPass = {},
+                 const std::atomic<bool>* cancel = nullptr);
+
+  const Film& film() const { return film_; }
+  const RenderStats& stats() const { return stats_; }
+  const RenderSettings& settings() const { return settings_; }
+  const PixelFilter& filter() const { return filter_; }
+
+ private:
+  struct Tile;
+  void renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount);
+
+  const RayTracer& tracer_;
+  const Camera& camera_;
+  const Integrator& integrator_;
+  const FilterFunctions& filterFunctions_;
+  RenderSettings settings_;
+  PixelFilter filter_;
+  Sampler sampler_;
+  Film film_;
+  std::vector<Tile> tiles_;
+  std::unique_ptr<tbb::task_arena> arena_;
+  RenderStats stats_;
+};
+
+}  // namespace pathway

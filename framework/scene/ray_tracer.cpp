@@ -1,0 +1,162 @@
+#include "scene/ray_tracer.h"
+
+#include <atomic>
+#include <string>
+
+#include "core/error.h"
+
+namespace pathway {
+namespace {
+
+struct DeviceState {
+  std::atomic<long long> bytes{0};  // Embree's own allocations, from its memory monitor
+  std::string error;                // first error Embree reported
+};
+
+void onEmbreeError(void* userPtr, RTCError code, const char* message) {
+  auto* state = static_cast<DeviceState*>(userPtr);
+  if (state->error.empty())
+    state->error = "Embree error " + std::to_string(static_cast<int>(code)) + ": " +
+                   (message ? message : "(no message)");
+}
+
+bool onEmbreeMemory(void* userPtr, ssize_t bytes, bool /*post*/) {
+  static_cast<DeviceState*>(userPtr)->bytes += bytes;
+  return true;
+}
+
+// One device per process: Embree's thread pool and memory monitor are shared by all scenes.
+DeviceState deviceState;
+RTCDevice sharedDevice() {
+  static RTCDevice device = [] {
+    RTCDevice d = rtcNewDevice(nullptr);
+    if (!d) throw PathwayError("could not create an Embree device");
+    rtcSetDeviceErrorFunction(d, onEmbreeError, &deviceState);
+    rtcSetDeviceMemoryMonitorFunction(d, onEmbreeMemory, &deviceState);
+    return d;
+  }();
+  return device;
+}
+
+void throwIfEmbreeFailed(const std::string& what) {
+  if (!deviceState.error.empty()) {
+    std::string message = what + ": " + deviceState.error;
+    deviceState.error.clear();
+    throw PathwayError(message);
+  }
+}
+
+RTCRay toEmbree(const Ray& ray) {
+  RTCRay r;
+  r.org_x = ray.origin.x;
+  r.org_y = ray.origin.y;
+  r.org_z = ray.origin.z;
+  r.dir_x = ray.direction.x;
+  r.dir_y = ray.direction.y;
+  r.dir_z = ray.direction.z;
+  r.tnear = 0.0f;
+  r.tfar = ray.tMax;
+  r.time = 0.0f;
+  r.mask = 0xFFFFFFFFu;
+  r.id = 0;
+  r.flags = 0;
+  return r;
+}
+
+}  // namespace
+
+RayTracer::RayTracer(const Scene& scene) : scene_(scene) {
+  device_ = sharedDevice();
+  const long long bytesBefore = deviceState.bytes.load();
+  rtcScene_ = rtcNewScene(device_);
+  // Robust traversal: rays through shared edges and vertices never slip between two triangles,
+  // which matters for closed scenes such as the furnace.
+  rtcSetSceneFlags(rtcScene_, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_COMPACT);
+  for (uint32_t meshIndex = 0; meshIndex < scene.meshes.size(); ++meshIndex) {
+    const Mesh& mesh = scene.meshes[meshIndex];
+    RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                               mesh.positions.data(), 0, sizeof(Vec3), mesh.positions.size());
+    rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                               mesh.triangles.data(), 0, sizeof(glm::uvec3), mesh.triangles.size());
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometryByID(rtcScene_, geometry, meshIndex);
+    rtcReleaseGeometry(geometry);
+  }
+  rtcCommitScene(rtcScene_);
+  bvhBytes_ = static_cast<size_t>(deviceState.bytes.load() - bytesBefore);
+  throwIfEmbreeFailed(scene.sourcePath + ": building the BVH failed");
+}
+
+RayTracer::~RayTracer() {
+  if (rtcScene_) rtcReleaseScene(rtcScene_);
+}
+
+std::optional<SurfaceHit> RayTracer::intersect(const Ray& ray, RayKind kind,
+                                               RayCounters& counters) const {
+  counters.count(kind);
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rayHit;
+  rayHit.ray = toEmbree(ray);
+  rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(rtcScene_, &context, &rayHit);
+  if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+
+  SurfaceHit hit;
+  hit.mesh = rayHit.hit.geomID;
+  hit.triangle = rayHit.hit.primID;
+  hit.distance = rayHit.ray.tfar;
+  const Mesh& mesh = scene_.meshes[hit.mesh];
+  const glm::uvec3 tri = mesh.triangles[hit.triangle];
+  const Vec3 p0 = mesh.positions[tri.x], p1 = mesh.positions[tri.y], p2 = mesh.positions[tri.z];
+  const float u = rayHit.hit.u, v = rayHit.hit.v, w = 1.0f - u - v;
+  // The point from barycentrics lies on the triangle to float precision, unlike origin + t*dir,
+  // whose error grows with the distance travelled.
+  hit.position = w * p0 + u * p1 + v * p2;
+
+  const Vec3 frontNormal = glm::cross(p1 - p0, p2 - p0);
+  const float length = glm::length(frontNormal);
+  hit.frontFace = glm::dot(frontNormal, ray.direction) < 0.0f;
+  if (length > 0.0f && std::isfinite(length)) {
+    hit.normal = (hit.frontFace ? frontNormal : -frontNormal) / length;
+  } else {  // a sliver too thin for a normal: face the ray
+    hit.normal = -glm::normalize(ray.direction);
+  }
+
+  const Material& material = scene_.materials[mesh.material];
+  hit.albedo = material.baseColor;
+  if (material.baseColorTexture >= 0 && !mesh.texcoords.empty()) {
+    const Vec2 uv = w * mesh.texcoords[tri.x] + u * mesh.texcoords[tri.y] + v * mesh.texcoords[tri.z];
+    hit.albedo *= scene_.textures[material.baseColorTexture].lookup(uv);
+  }
+  if (material.isEmissive() && (hit.frontFace || material.doubleSided)) hit.emitted = material.emission;
+  return hit;
+}
+
+bool RayTracer::occluded(const Ray& ray, RayKind kind, RayCounters& counters) const {
+  counters.count(kind);
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay r = toEmbree(ray);
+  rtcOccluded1(rtcScene_, &context, &r);
+  return r.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
+}
+
+Ray RayTracer::spawnRay(const SurfaceHit& from, const Vec3& direction, float tMax) {
+  const Vec3 side = glm::dot(direction, from.normal) >= 0.0f ? from.normal : -from.normal;
+  return Ray{offsetRayOrigin(from.position, side), direction, tMax};
+}
+
+Ray RayTracer::spawnRayTo(const SurfaceHit& from, const Vec3& target, const Vec3& targetNormal) {
+  const Vec3 toTarget = target - from.position;
+  const Vec3 side = glm::dot(toTarget, from.normal) >= 0.0f ? from.normal : -from.normal;
+  const Vec3 origin = offsetRayOrigin(from.position, side);
+  const Vec3 targetSide = glm::dot(toTarget, targetNormal) <= 0.0f ? targetNormal : -targetNormal;
+  const Vec3 end = offsetRayOrigin(target, targetSide);
+  // Unnormalised direction: the segment is (0, 1], ending just in front of the target surface.
+  return Ray{origin, end - origin, 1.0f};
+}
+
+}  // namespace pathway

@@ -1,0 +1,56 @@
+// The scene's ray queries, answered by an Embree BVH built over the scene's own vertex and index
+// arrays (shared, not copied). Every query counts itself in the caller's RayCounters.
+#pragma once
+
+#include <embree3/rtcore.h>
+
+#include <optional>
+
+#include "core/math.h"
+#include "core/ray_counters.h"
+#include "scene/scene.h"
+
+namespace pathway {
+
+// What an integrator needs to know about the closest hit.
+struct SurfaceHit {
+  float distance = 0.0f;  // ray parameter t of the hit
+  Vec3 position;          // on the triangle, from its barycentric coordinates
+  Vec3 normal;            // unit geometric normal, turned to face the incoming ray
+  bool frontFace = true;  // the ray hit the counter-clockwise (front) side
+  Color albedo{0.0f};     // Lambertian reflectance (factor x texture)
+  Color emitted{0.0f};    // radiance emitted back along the ray (zero on a one-sided back face)
+  uint32_t mesh = 0;
+  uint32_t triangle = 0;
+};
+
+class RayTracer {
+ public:
+  explicit RayTracer(const Scene& scene);  // builds the BVH; the scene must outlive the tracer
+  ~RayTracer();
+  RayTracer(const RayTracer&) = delete;
+  RayTracer& operator=(const RayTracer&) = delete;
+
+  // Closest hit along the ray in (0, tMax], or nothing.
+  std::optional<SurfaceHit> intersect(const Ray& ray, RayKind kind, RayCounters& counters) const;
+  // True when anything blocks the ray in (0, tMax].
+  bool occluded(const Ray& ray, RayKind kind, RayCounters& counters) const;
+
+  // A ray leaving a surface point in `direction` (any length); its origin is moved off the surface
+  // so it cannot hit the surface it starts on. tMax is in units of |direction|.
+  static Ray spawnRay(const SurfaceHit& from, const Vec3& direction, float tMax = kInfinity);
+  // A shadow ray from a surface point to a point on another surface with normal `targetNormal`;
+  // both ends are moved off their surfaces so neither surface can block it.
+  static Ray spawnRayTo(const SurfaceHit& from, const Vec3& target, const Vec3& targetNormal);
+
+  const Scene& scene() const { return scene_; }
+  size_t bvhBytes() const { return bvhBytes_; }  // memory Embree allocated for the BVH
+
+ private:
+  const Scene& scene_;
+  RTCDevice device_ = nullptr;
+  RTCScene rtcScene_ = nullptr;
+  size_t bvhBytes_ = 0;
+};
+
+}  // namespace pathway

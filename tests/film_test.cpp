@@ -1,0 +1,92 @@
+// The film and stage 1's splat: analytic weights, and numerical normalisation that makes a constant
+// scene come back exactly constant for every filter, also where Σw is close to zero.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "film/film.h"
+#include "film/pixel_filter.h"
+#include "reference_variant.h"
+#include "render/render_job.h"
+#include "test_scenes.h"
+
+namespace pathway {
+namespace {
+
+TEST(Film, SplatAddsTheFilterWeightToEveryPixelInReach) {
+  PATHWAY_REQUIRE_SOLUTIONS();
+  const FilterFunctions& reference = filterFunctions(Variant::Reference);
+  for (FilterType type : {FilterType::Box, FilterType::Tent, FilterType::MitchellNetravali,
+                          FilterType::Gaussian}) {
+    const PixelFilter filter(type, naturalFilterRadius(type), reference);
+    FilmBlock block(16, 16, 0, 0, 16, 16);
+    const Vec2 p(7.3f, 8.9f);
+    const Color radiance(2.0f, 3.0f, 4.0f);
+    reference.splat(block, p, radiance, filter);
+    for (int y = 0; y < 16; ++y) {
+      for (int x = 0; x < 16; ++x) {
+        const float expected = filter.evaluate(p.x - (x + 0.5f), p.y - (y + 0.5f));
+        const PixelSums& sums = block.at(x, y);
+        EXPECT_FLOAT_EQ(static_cast<float>(sums.weight), expected)
+            << filterTypeName(type) << " pixel " << x << "," << y;
+        EXPECT_FLOAT_EQ(static_cast<float>(sums.weightedRadiance.y), expected * radiance.y);
+      }
+    }
+  }
+}
+
+TEST(Film, DevelopDividesWeightedRadianceByWeight) {
+  Film film(2, 1);
+  FilmBlock block(2, 1, 0, 0, 2, 1);
+  block.addSample(0, 0, 0.5f, Color(2.0f));
+  block.addSample(0, 0, 1.5f, Color(4.0f));
+  block.addSample(1, 0, 1.0f, Color(1.0f));
+  block.addSample(1, 0, -1.0f, Color(3.0f));  // Σw = 0 exactly: unresolved, written as 0
+  block.addSample(5, 5, 1.0f, Color(9.0f));   // outside the image: ignored
+  film.merge(block);
+  size_t unresolved = 0;
+  const Image image = film.develop(&unresolved);
+  EXPECT_FLOAT_EQ(image.at(0, 0).x, (0.5f * 2 + 1.5f * 4) / 2.0f);
+  EXPECT_EQ(image.at(1, 0), Color(0.0f));
+  EXPECT_EQ(unresolved, 1u);
+  // Variance of the ratio estimate, I = 3.5: Σ w²(L - I)² / (Σw)² = (0.25·1.5² + 2.25·0.5²) / 4.
+  EXPECT_NEAR(film.variance().at(0, 0).x, (0.25 * 1.5 * 1.5 + 2.25 * 0.5 * 0.5) / 4.0, 1e-6);
+}
+
+// Renders a scene whose radiance is the same everywhere; the developed image must be that value.
+TEST(Film, ConstantSceneComesBackExactlyForEveryFilterAndSampleCount) {
+  PATHWAY_REQUIRE_SOLUTIONS();
+  const Color constant(0.3f, 0.7f, 1.9f);
+  const Scene scene = test::constantScene(constant);
+  const RayTracer tracer(scene);
+  for (FilterType type : {FilterType::Box, FilterType::Tent, FilterType::MitchellNetravali,
+                          FilterType::Gaussian}) {
+    for (uint32_t spp : {1u, 2u, 4u}) {
+      RenderRequest request;
+      request.integrator = "stage1@ref";
+      request.settings.width = 48;
+      request.settings.height = 32;
+      request.settings.samplesPerPixel = spp;
+      request.settings.filter = type;
+      request.settings.seed = 7;
+      const RenderResult result = runRender(scene, tracer, request);
+      size_t zeroPixels = 0;
+      for (const Color& pixel : result.images.color.pixels) {
+        ASSERT_TRUE(isFinite(pixel));
+        if (pixel == Color(0.0f)) {
+          ++zeroPixels;  // only where Σw ≈ 0, which the film counts
+          continue;
+        }
+        for (int c = 0; c < 3; ++c) ASSERT_FLOAT_EQ(pixel[c], constant[c]) << filterTypeName(type);
+      }
+      EXPECT_EQ(zeroPixels, result.unresolvedPixels) << filterTypeName(type) << " " << spp;
+      if (type != FilterType::MitchellNetravali) {
+        EXPECT_EQ(zeroPixels, 0u) << filterTypeName(type);
+      }
+      EXPECT_EQ(result.stats.counters.invalidSamples, 0u);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pathway

@@ -1,0 +1,116 @@
+// Ray queries: counters, front/back faces, and no self-intersection at any scale or offset.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "sampling/pcg32.h"
+#include "scene/camera.h"
+#include "scene/ray_tracer.h"
+#include "test_scenes.h"
+
+namespace pathway {
+namespace {
+
+// Cosine-distributed direction around +y (Malley's method), written out here so the test does not
+// lean on any stage's code.
+Vec3 cosineAroundUp(float u1, float u2) {
+  const float r = std::sqrt(u1), phi = 2.0f * kPi * u2;
+  return Vec3(r * std::cos(phi), std::sqrt(std::fmax(0.0f, 1.0f - u1)), r * std::sin(phi));
+}
+
+TEST(RayTracer, OpenPlaneHasNoSelfIntersectionAtAnyScaleOrOffset) {
+  for (float scale : {1e-3f, 1e-2f, 1e-1f, 1.0f, 1e1f, 1e2f, 1e3f}) {
+    for (float offset : {0.0f, 1e4f, -1e4f}) {
+      const Scene scene = test::openPlane(scale, offset);
+      const RayTracer tracer(scene);
+      const Camera camera(scene, 64, 64);
+      RayCounters counters;
+      Pcg32 rng(42);
+      int hits = 0, blocked = 0;
+      for (int i = 0; i < 4000; ++i) {
+        const Vec2 film(64.0f * rng.nextFloat(), 32.0f + 32.0f * rng.nextFloat());
+        const auto hit = tracer.intersect(camera.generateRay(film), RayKind::Primary, counters);
+        if (!hit) continue;
+        ++hits;
+        const Vec3 direction = cosineAroundUp(rng.nextFloat(), rng.nextFloat());
+        // Both query kinds, with an unbounded and with an AO-like bounded segment.
+        const Ray ray = RayTracer::spawnRay(*hit, direction);
+        const Ray shortRay = RayTracer::spawnRay(*hit, direction, 0.5f * scale);
+        if (tracer.occluded(ray, RayKind::Shadow, counters) ||
+            tracer.occluded(shortRay, RayKind::Secondary, counters) ||
+            tracer.intersect(ray, RayKind::Secondary, counters))
+          ++blocked;
+      }
+      EXPECT_GT(hits, 3000) << "scale " << scale << " offset " << offset;
+      EXPECT_EQ(blocked, 0) << "scale " << scale << " offset " << offset;  // AO is exactly 1
+      EXPECT_EQ(counters.primary, 4000u);
+      EXPECT_EQ(counters.secondary, 2u * hits);
+      EXPECT_EQ(counters.shadow, static_cast<uint64_t>(hits));
+    }
+  }
+}
+
+TEST(RayTracer, ReportsFaceSideNormalAlbedoAndOneSidedEmission) {
+  Scene scene;
+  Material light;
+  light.baseColor = Color(0.25f, 0.5f, 0.75f);
+  light.emission = Color(3.0f);
+  scene.materials = {light};
+  // A quad at y = 0 facing +y.
+  test::addQuad(scene, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, -1}, 0);
+  test::finishScene(scene);
+  const RayTracer tracer(scene);
+  RayCounters counters;
+
+  const auto front = tracer.intersect({Vec3(0.2f, 2, 0.1f), Vec3(0, -1, 0)}, RayKind::Primary, counters);
+  ASSERT_TRUE(front);
+  EXPECT_TRUE(front->frontFace);
+  EXPECT_NEAR(front->distance, 2.0f, 1e-6);
+  EXPECT_NEAR(glm::distance(front->position, Vec3(0.2f, 0, 0.1f)), 0.0f, 1e-6);
+  EXPECT_NEAR(glm::distance(front->normal, Vec3(0, 1, 0)), 0.0f, 1e-6);
+  EXPECT_EQ(front->albedo, light.baseColor);
+  EXPECT_EQ(front->emitted, Color(3.0f));
+
+  const auto back = tracer.intersect({Vec3(0.2f, -2, 0.1f), Vec3(0, 1, 0)}, RayKind::Primary, counters);
+  ASSERT_TRUE(back);
+  EXPECT_FALSE(back->frontFace);
+  EXPECT_NEAR(glm::distance(back->normal, Vec3(0, -1, 0)), 0.0f, 1e-6);  // faces the ray
+  EXPECT_EQ(back->emitted, Color(0.0f));  // one-sided emitter seen from behind
+
+  scene.materials[0].doubleSided = true;
+  const auto backDouble =
+      tracer.intersect({Vec3(0.2f, -2, 0.1f), Vec3(0, 1, 0)}, RayKind::Primary, counters);
+  ASSERT_TRUE(backDouble);
+  EXPECT_EQ(backDouble->emitted, Color(3.0f));
+
+  // Segments: tMax stops short of the quad; an occlusion query agrees with intersect.
+  EXPECT_FALSE(tracer.intersect({Vec3(0, 2, 0), Vec3(0, -1, 0), 1.9f}, RayKind::Secondary, counters));
+  EXPECT_FALSE(tracer.occluded({Vec3(0, 2, 0), Vec3(0, -1, 0), 1.9f}, RayKind::Shadow, counters));
+  EXPECT_TRUE(tracer.occluded({Vec3(0, 2, 0), Vec3(0, -1, 0), 2.1f}, RayKind::Shadow, counters));
+}
+
+TEST(RayTracer, ShadowRayToALightPointIsNotBlockedByEitherEnd) {
+  Scene scene;
+  scene.materials = {Material{}};
+  test::addQuad(scene, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, -1}, 0);    // floor, up
+  test::addQuad(scene, {-1, 1, -1}, {1, 1, -1}, {1, 1, 1}, {-1, 1, 1}, 0);    // ceiling, down
+  test::finishScene(scene);
+  const RayTracer tracer(scene);
+  RayCounters counters;
+  Pcg32 rng(3);
+  for (int i = 0; i < 1000; ++i) {
+    const Vec3 down(2 * rng.nextFloat() - 1, -1.5f, 2 * rng.nextFloat() - 1);  // stays on the floor
+    const auto hit = tracer.intersect({Vec3(0, 0.5f, 0), down}, RayKind::Primary, counters);
+    ASSERT_TRUE(hit);
+    const Vec3 target(2 * rng.nextFloat() - 1, 1, 2 * rng.nextFloat() - 1);
+    const Ray shadow = RayTracer::spawnRayTo(*hit, target, Vec3(0, -1, 0));
+    EXPECT_FALSE(tracer.occluded(shadow, RayKind::Shadow, counters)) << i;
+    // The same segment pushed past the target does hit the ceiling: the test can fail.
+    Ray tooLong = shadow;
+    tooLong.tMax = 1.01f;
+    EXPECT_TRUE(tracer.occluded(tooLong, RayKind::Shadow, counters)) << i;
+  }
+}
+
+}  // namespace
+}  // namespace pathway

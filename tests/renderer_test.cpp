@@ -1,0 +1,113 @@
+// The renderer: same seed -> bit-identical image for any thread count; exact counters; cancel.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "reference_variant.h"
+#include "render/render_job.h"
+#include "test_scenes.h"
+
+namespace pathway {
+namespace {
+
+RenderRequest smallRequest(int threads, SamplerType sampler) {
+  RenderRequest request;
+  request.integrator = "stage1@ref";
+  request.settings.width = 70;  // not a multiple of the tile size, on purpose
+  request.settings.height = 45;
+  request.settings.samplesPerPixel = 4;
+  request.settings.samplesPerPass = 2;
+  request.settings.filter = FilterType::MitchellNetravali;
+  request.settings.sampler = sampler;
+  request.settings.seed = 11;
+  request.settings.threads = threads;
+  return request;
+}
+
+TEST(Renderer, SameSeedGivesBitIdenticalImagesForOneAndManyThreads) {
+  PATHWAY_REQUIRE_SOLUTIONS();
+  const Scene scene = test::boxRoom();
+  const RayTracer tracer(scene);
+  for (SamplerType sampler : {SamplerType::Independent, SamplerType::Stratified, SamplerType::Sobol}) {
+    const RenderResult one = runRender(scene, tracer, smallRequest(1, sampler));
+    for (int threads : {2, 3, 8}) {
+      const RenderResult many = runRender(scene, tracer, smallRequest(threads, sampler));
+      ASSERT_EQ(one.images.color.pixels.size(), many.images.color.pixels.size());
+      EXPECT_EQ(0, std::memcmp(one.images.color.pixels.data(), many.images.color.pixels.data(),
+                               one.images.color.pixels.size() * sizeof(Color)))
+          << samplerTypeName(sampler) << " with " << threads << " threads";
+      EXPECT_EQ(0, std::memcmp(one.images.variance.pixels.data(),
+                               many.images.variance.pixels.data(),
+                               one.images.variance.pixels.size() * sizeof(Color)));
+    }
+    // A different seed must change the image (otherwise the test above proves nothing).
+    RenderRequest other = smallRequest(1, sampler);
+    other.settings.seed = 12;
+    const RenderResult different = runRender(scene, tracer, other);
+    EXPECT_NE(0, std::memcmp(one.images.color.pixels.data(), different.images.color.pixels.data(),
+                             one.images.color.pixels.size() * sizeof(Color)));
+  }
+}
+
+TEST(Renderer, CountsOnePrimaryRayPerSample) {
+  PATHWAY_REQUIRE_SOLUTIONS();
+  const Scene scene = test::boxRoom();
+  const RayTracer tracer(scene);
+  const RenderResult result = runRender(scene, tracer, smallRequest(2, SamplerType::Sobol));
+  const uint64_t samples = 70ull * 45 * 4;
+  EXPECT_EQ(result.stats.counters.primary, samples);
+  EXPECT_EQ(result.stats.counters.samples, samples);
+  EXPECT_EQ(result.stats.counters.secondary, 0u);
+  EXPECT_EQ(result.stats.samplesPerPixel, 4u);
+}
+
+class NaNIntegrator : public Integrator {
+ public:
+  Color Li(const Ray&, SampleStream& samples, RenderContext&) const override {
+    return samples.next1D() < 0.5f ? Color(NAN) : Color(1.0f);
+  }
+};
+
+TEST(Renderer, DropsAndCountsNonFiniteSamples) {
+  PATHWAY_REQUIRE_SOLUTIONS();
+  const Scene scene = test::constantScene(Color(1.0f));
+  const RayTracer tracer(scene);
+  const Camera camera(scene, 32, 32);
+  const NaNIntegrator integrator;
+  RenderSettings settings;
+  settings.width = settings.height = 32;
+  settings.samplesPerPixel = 8;
+  Renderer renderer(tracer, camera, integrator, filterFunctions(Variant::Reference), settings);
+  renderer.renderAll();
+  const RayCounters& c = renderer.stats().counters;
+  EXPECT_EQ(c.invalidSamples + c.samples, 32u * 32 * 8);
+  EXPECT_GT(c.invalidSamples, 32u * 32 * 8 / 3);  // about half, far from the bounds
+  EXPECT_GT(c.samples, 32u * 32 * 8 / 3);
+  for (const Color& pixel : renderer.film().develop().pixels) {
+    ASSERT_TRUE(isFinite(pixel));
+  }
+}
+
+TEST(Renderer, CancelledPassLeavesTheFilmUntouched) {
+  PATHWAY_REQUIRE_SOLUTIONS();
+  const Scene scene = test::boxRoom();
+  const RayTracer tracer(scene);
+  const Camera camera(scene, 32, 32);
+  const auto integrator = findIntegrator("stage1@ref").create(ParamValues{});
+  RenderSettings settings;
+  settings.width = settings.height = 32;
+  settings.samplesPerPixel = 4;
+  Renderer renderer(tracer, camera, *integrator, filterFunctions(Variant::Reference), settings);
+  ASSERT_TRUE(renderer.renderPass());
+  const Image before = renderer.film().develop();
+  const std::atomic<bool> cancel{true};
+  EXPECT_FALSE(renderer.renderPass(&cancel));
+  EXPECT_EQ(renderer.stats().samplesPerPixel, 1u);
+  const Image after = renderer.film().develop();
+  EXPECT_EQ(0, std::memcmp(before.pixels.data(), after.pixels.data(),
+                           before.pixels.size() * sizeof(Color)));
+  EXPECT_FALSE(renderer.finished());
+}
+
+}  // namespace
+}  // namespace pathway
