@@ -1,0 +1,242 @@
+// pathway_bench: the measurements the issues ask for, printed as tables (run by scripts/bench).
+//
+//   pathway_bench rays   [scene] [--width W] [--repeats R]   raw Embree vs the framework, rays/s
+//   pathway_bench memory SCENE                                resident bytes per triangle, BVH build
+#include <embree3/rtcore.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include "core/error.h"
+#include "render/render_job.h"
+#include "sampling/pcg32.h"
+#include "scene/gltf_loader.h"
+
+namespace pathway {
+namespace {
+
+double secondsOf(const std::function<void()>& work) {
+  const auto start = std::chrono::steady_clock::now();
+  work();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Best of `repeats` runs: the least disturbed by other processes on a shared machine.
+double bestSeconds(int repeats, const std::function<void()>& work) {
+  double best = 1e30;
+  for (int i = 0; i < repeats; ++i) best = std::min(best, secondsOf(work));
+  return best;
+}
+
+// ---- Raw Embree: the same arrays, no framework in between. ----
+struct RawEmbree {
+  RTCDevice device = rtcNewDevice(nullptr);
+  RTCScene scene = rtcNewScene(device);
+
+  explicit RawEmbree(const Scene& s) {
+    rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_COMPACT);
+    for (uint32_t i = 0; i < s.meshes.size(); ++i) {
+      RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+      rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                 s.meshes[i].positions.data(), 0, sizeof(Vec3),
+                                 s.meshes[i].positions.size());
+      rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                 s.meshes[i].triangles.data(), 0, sizeof(glm::uvec3),
+                                 s.meshes[i].triangles.size());
+      rtcCommitGeometry(g);
+      rtcAttachGeometryByID(scene, g, i);
+      rtcReleaseGeometry(g);
+    }
+    rtcCommitScene(scene);
+  }
+  ~RawEmbree() {
+    rtcReleaseScene(scene);
+    rtcReleaseDevice(device);
+  }
+  // Returns the hit distance, or infinity.
+  float intersect(const Ray& ray) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh;
+    rh.ray.org_x = ray.origin.x, rh.ray.org_y = ray.origin.y, rh.ray.org_z = ray.origin.z;
+    rh.ray.dir_x = ray.direction.x, rh.ray.dir_y = ray.direction.y, rh.ray.dir_z = ray.direction.z;
+    rh.ray.tnear = 0.0f, rh.ray.tfar = ray.tMax, rh.ray.time = 0.0f;
+    rh.ray.mask = 0xFFFFFFFFu, rh.ray.id = 0, rh.ray.flags = 0;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene, &context, &rh);
+    return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? kInfinity : rh.ray.tfar;
+  }
+};
+
+Vec3 cosineDirection(const Vec3& normal, float u1, float u2) {
+  const float r = std::sqrt(u1), phi = 2.0f * kPi * u2;
+  return Frame(normal).toWorld(Vec3(r * std::cos(phi), r * std::sin(phi), std::sqrt(1.0f - u1)));
+}
+
+// Camera rays through jittered pixel positions, and from their hits cosine-distributed rays.
+struct RaySets {
+  std::vector<Ray> primary;
+  std::vector<Ray> incoherent;
+};
+
+RaySets makeRays(const Scene& scene, const RayTracer& tracer, int width, int height) {
+  RaySets sets;
+  const Camera camera(scene, width, height);
+  Pcg32 rng(1);
+  RayCounters ignored;
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const Ray ray = camera.generateRay(Vec2(x + rng.nextFloat(), y + rng.nextFloat()));
+      sets.primary.push_back(ray);
+      if (const auto hit = tracer.intersect(ray, RayKind::Primary, ignored))
+        sets.incoherent.push_back(RayTracer::spawnRay(
+            *hit, cosineDirection(hit->normal, rng.nextFloat(), rng.nextFloat())));
+    }
+  }
+  return sets;
+}
+
+// A diffuse bounce through the renderer: camera ray, then one cosine-distributed closest-hit ray.
+class DiffuseBounceIntegrator : public Integrator {
+ public:
+  Color Li(const Ray& cameraRay, SampleStream& samples, RenderContext& context) const override {
+    const auto hit = context.tracer.intersect(cameraRay, RayKind::Primary, context.counters);
+    if (!hit) return Color(0.0f);
+    const Vec2 u = samples.next2D();
+    const Ray bounce = RayTracer::spawnRay(*hit, cosineDirection(hit->normal, u.x, u.y));
+    const auto next = context.tracer.intersect(bounce, RayKind::Secondary, context.counters);
+    return next ? next->albedo : Color(1.0f);
+  }
+};
+const bool registered = registerIntegrator(
+    {"bench-bounce", 0, Variant::Reference, "benchmark: camera ray + one diffuse bounce", {},
+     [](const ParamValues&) { return std::make_unique<DiffuseBounceIntegrator>(); }});
+
+int benchRays(const std::string& scenePath, int width, int repeats) {
+  const Scene scene = loadScene(scenePath);
+  const RayTracer tracer(scene);
+  const RawEmbree raw(scene);
+  const RaySets rays = makeRays(scene, tracer, width, width);
+  std::printf("scene %s, %zu triangles, %d threads, %dx%d rays, best of %d runs\n\n",
+              scenePath.c_str(), scene.triangleCount(), tbb::info::default_concurrency(), width,
+              width, repeats);
+
+  auto rate = [](size_t count, double seconds) { return count / seconds * 1e-6; };
+  auto measureRaw = [&](const std::vector<Ray>& set) {
+    std::vector<float> sink(set.size());
+    return bestSeconds(repeats, [&] {
+      tbb::parallel_for(size_t(0), set.size(), [&](size_t i) { sink[i] = raw.intersect(set[i]); });
+    });
+  };
+  auto measureApi = [&](const std::vector<Ray>& set) {
+    std::vector<float> sink(set.size());
+    return bestSeconds(repeats, [&] {
+      tbb::parallel_for(tbb::blocked_range<size_t>(0, set.size()), [&](const auto& range) {
+        RayCounters counters;
+        for (size_t i = range.begin(); i != range.end(); ++i) {
+          const auto hit = tracer.intersect(set[i], RayKind::Secondary, counters);
+          sink[i] = hit ? hit->distance : kInfinity;
+        }
+      });
+    });
+  };
+  // Through the renderer: 1 spp box filter, one pass, so the film work per ray is as small as it
+  // gets; rays/s from the renderer's own counters and clock.
+  auto measureRenderer = [&](const std::string& integrator, uint64_t* raysOut) {
+    RenderRequest request;
+    request.integrator = integrator;
+    request.settings.width = request.settings.height = width;
+    request.settings.samplesPerPixel = 1;
+    double best = 1e30;
+    for (int i = 0; i < repeats; ++i) {
+      const RenderResult result = runRender(scene, tracer, request);
+      best = std::min(best, result.stats.seconds);
+      *raysOut = result.stats.counters.totalRays();
+    }
+    return best;
+  };
+
+  const double rawPrimary = measureRaw(rays.primary), apiPrimary = measureApi(rays.primary);
+  const double rawBounce = measureRaw(rays.incoherent), apiBounce = measureApi(rays.incoherent);
+  uint64_t rendererPrimaryRays = 0, rendererBounceRays = 0;
+  const double rendererPrimary = measureRenderer("stage1@ref", &rendererPrimaryRays);
+  const double rendererBounce = measureRenderer("bench-bounce", &rendererBounceRays);
+
+  std::printf("%-40s %12s %10s\n", "ray set / path", "Mrays/s", "vs raw");
+  auto row = [](const char* name, double mrays, double rawMrays) {
+    std::printf("%-40s %12.2f %10.2f\n", name, mrays, mrays / rawMrays);
+  };
+  const double rawP = rate(rays.primary.size(), rawPrimary);
+  const double rawB = rate(rays.incoherent.size(), rawBounce);
+  row("primary: raw Embree rtcIntersect1", rawP, rawP);
+  row("primary: RayTracer::intersect", rate(rays.primary.size(), apiPrimary), rawP);
+  row("primary: renderer (stage1@ref, box, 1 spp)", rate(rendererPrimaryRays, rendererPrimary), rawP);
+  row("diffuse bounce: raw Embree rtcIntersect1", rawB, rawB);
+  row("diffuse bounce: RayTracer::intersect", rate(rays.incoherent.size(), apiBounce), rawB);
+  // The renderer's bounce path mixes one primary and one bounce ray per sample; compare it with
+  // raw Embree tracing the same mix.
+  const double rawMix = (rays.primary.size() + rays.incoherent.size()) / (rawPrimary + rawBounce) * 1e-6;
+  row("camera + bounce: raw Embree (same mix)", rawMix, rawMix);
+  row("camera + bounce: renderer (bench-bounce)", rate(rendererBounceRays, rendererBounce), rawMix);
+  return 0;
+}
+
+long residentBytes() {
+  std::ifstream statm("/proc/self/statm");
+  long pages = 0, resident = 0;
+  statm >> pages >> resident;
+  return resident * sysconf(_SC_PAGESIZE);
+}
+
+int benchMemory(const std::string& scenePath) {
+  const long before = residentBytes();
+  Scene scene;
+  const double loadSeconds = secondsOf([&] { scene = loadScene(scenePath); });
+  const long afterLoad = residentBytes();
+  std::unique_ptr<RayTracer> tracer;
+  const double buildSeconds = secondsOf([&] { tracer = std::make_unique<RayTracer>(scene); });
+  const long afterBuild = residentBytes();
+  const double triangles = static_cast<double>(scene.triangleCount());
+  std::printf("scene %s: %.0f triangles, %zu meshes\n", scenePath.c_str(), triangles,
+              scene.meshes.size());
+  std::printf("load %.2f s, BVH build %.2f s (%d threads)\n", loadSeconds, buildSeconds,
+              tbb::info::default_concurrency());
+  std::printf("resident bytes per triangle: scene %.1f, BVH %.1f, total %.1f\n",
+              (afterLoad - before) / triangles, (afterBuild - afterLoad) / triangles,
+              (afterBuild - before) / triangles);
+  std::printf("Embree's own count of BVH bytes per triangle: %.1f\n", tracer->bvhBytes() / triangles);
+  return 0;
+}
+
+}  // namespace
+}  // namespace pathway
+
+int main(int argc, char** argv) {
+  try {
+    const std::string mode = argc > 1 ? argv[1] : "";
+    std::string scene = PATHWAY_DEFAULT_SCENE;
+    int width = 512, repeats = 5;
+    for (int i = 2; i < argc; ++i) {
+      const std::string arg = argv[i];
+      if (arg == "--width" && i + 1 < argc) width = std::stoi(argv[++i]);
+      else if (arg == "--repeats" && i + 1 < argc) repeats = std::stoi(argv[++i]);
+      else scene = arg;
+    }
+    if (mode == "rays") return pathway::benchRays(scene, width, repeats);
+    if (mode == "memory") return pathway::benchMemory(scene);
+    std::fprintf(stderr, "usage: pathway_bench rays [scene] [--width W] [--repeats R]\n"
+                         "       pathway_bench memory SCENE\n");
+    return 2;
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "pathway_bench: error: %s\n", error.what());
+    return 1;
+  }
+}

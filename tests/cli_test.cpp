@@ -1,0 +1,136 @@
+// End-to-end tests of `pathway render`: bad input gets one clear message, a non-zero exit and no
+// output file; a good render writes its images with the settings and counters in the metadata.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "io/image_io.h"
+
+namespace pathway {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int exitCode;
+  std::string output;  // stdout and stderr together
+};
+
+Outcome runPathway(const std::string& arguments) {
+  const std::string command = std::string(PATHWAY_BINARY) + " " + arguments + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return {-1, "popen failed"};
+  std::string output;
+  std::array<char, 4096> buffer;
+  while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) output.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("pathway_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  // The command fails with exit code 1, prints one "pathway: error:" line naming `needle`, and
+  // leaves no file behind.
+  void expectRefused(const std::string& arguments, const std::string& needle) {
+    const Outcome outcome = runPathway(arguments + " -o " + path("out.png"));
+    EXPECT_NE(outcome.exitCode, 0) << arguments;
+    EXPECT_NE(outcome.output.find(needle), std::string::npos)
+        << arguments << "\nmessage was: " << outcome.output;
+    EXPECT_TRUE(fs::is_empty(dir_)) << arguments << " left a file behind";
+  }
+
+  fs::path dir_;
+};
+
+const std::string kScene = std::string(PATHWAY_SCENES_DIR) + "/cornell_box.gltf";
+
+TEST_F(Cli, MissingSceneFileIsNamed) {
+  expectRefused("render " + path("nowhere.gltf"), "nowhere.gltf");
+}
+
+TEST_F(Cli, MalformedSceneIsNamed) {
+  std::FILE* file = std::fopen(path("broken.gltf").c_str(), "w");
+  std::fputs("{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [", file);
+  std::fclose(file);
+  const Outcome outcome = runPathway("render " + path("broken.gltf") + " -o " + path("out.png"));
+  EXPECT_EQ(outcome.exitCode, 1);
+  EXPECT_NE(outcome.output.find("broken.gltf"), std::string::npos) << outcome.output;
+  EXPECT_FALSE(fs::exists(path("out.png")));
+}
+
+TEST_F(Cli, UnknownIntegratorListsTheKnownOnes) {
+  expectRefused("render " + kScene + " --integrator stage9", "unknown integrator 'stage9'");
+  expectRefused("render " + kScene + " --integrator stage9", "stage1");
+}
+
+TEST_F(Cli, UnknownParameterIsNamed) {
+  expectRefused("render " + kScene + " -p bounces=3", "no parameter 'bounces'");
+  expectRefused("render " + kScene + " -p bounces", "name=value");
+}
+
+TEST_F(Cli, OutOfRangeSettingsAreRefused) {
+  expectRefused("render " + kScene + " --spp 0", "--spp");
+  expectRefused("render " + kScene + " --width -5", "--width");
+  expectRefused("render " + kScene + " --filter-radius 100", "--filter-radius");
+  expectRefused("render " + kScene + " --sampler halton", "halton");
+  expectRefused("render " + kScene + " --filter sinc", "sinc");
+}
+
+TEST_F(Cli, BadOutputPathIsRefusedBeforeRendering) {
+  const Outcome jpg = runPathway("render " + kScene + " -o " + path("out.jpg"));
+  EXPECT_EQ(jpg.exitCode, 1);
+  EXPECT_NE(jpg.output.find("out.jpg"), std::string::npos) << jpg.output;
+  const Outcome folder = runPathway("render " + kScene + " -o " + path("missing/out.png"));
+  EXPECT_EQ(folder.exitCode, 1);
+  EXPECT_NE(folder.output.find("does not exist"), std::string::npos) << folder.output;
+  EXPECT_TRUE(fs::is_empty(dir_));
+}
+
+TEST_F(Cli, RenderWritesPngAndExrWithSettingsAndCounters) {
+  const Outcome outcome =
+      runPathway("render " + kScene + " -i stage1 --spp 3 --width 40 --height 30 --seed 5 -q -o " +
+                 path("a.png") + " -o " + path("a.exr"));
+  ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+  EXPECT_TRUE(fs::exists(path("a.png")));
+  const LoadedImage exr = readImageFile(path("a.exr"));
+  EXPECT_EQ(exr.images.color.width, 40);
+  EXPECT_EQ(exr.images.color.height, 30);
+  EXPECT_EQ(exr.images.variance.width, 40);
+  EXPECT_EQ(exr.images.weight.width, 40);
+  EXPECT_EQ(exr.metadata.at("pathway:integrator"), "stage1");
+  EXPECT_EQ(exr.metadata.at("pathway:spp"), "3");
+  EXPECT_EQ(exr.metadata.at("pathway:seed"), "5");
+  EXPECT_EQ(exr.metadata.at("pathway:primaryRays"), std::to_string(40 * 30 * 3));
+  // The student skeleton of stage 1 is unfinished: the render says so and records it.
+  EXPECT_NE(outcome.output.find("assignments/stage1/stage1_filtering.cpp"), std::string::npos)
+      << outcome.output;
+  EXPECT_NE(exr.metadata.at("pathway:todos"), "0");
+  // No temporary files are left next to the outputs.
+  size_t files = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir_)) ++files;
+  EXPECT_EQ(files, 2u);
+}
+
+TEST_F(Cli, ListDescribesEveryIntegrator) {
+  const Outcome outcome = runPathway("render --list");
+  EXPECT_EQ(outcome.exitCode, 0);
+  EXPECT_NE(outcome.output.find("stage1 "), std::string::npos) << outcome.output;
+#ifdef PATHWAY_HAS_SOLUTIONS
+  EXPECT_NE(outcome.output.find("stage1@ref"), std::string::npos) << outcome.output;
+#endif
+}
+
+}  // namespace
+}  // namespace pathway
