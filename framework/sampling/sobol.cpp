@@ -1,0 +1,111 @@
+#include "sampling/sobol.h"
+
+#include <array>
+#include <cassert>
+#include <iterator>
+
+namespace pathway {
+namespace {
+
+// One line of Joe & Kuo's table: d s a m_1 .. m_s.
+constexpr uint32_t kMaxDegree = 9;  // the largest s among the lines we keep
+struct JoeKuoRow {
+  uint32_t d, s, a;
+  uint32_t m[kMaxDegree];
+};
+
+constexpr JoeKuoRow kJoeKuo[] = {
+#include "sampling/sobol_joe_kuo.inc"
+};
+static_assert(std::size(kJoeKuo) + 1 == kSobolDimensions, "one row per dimension after the first");
+
+// Catches a lost or mistyped line at compile time: rows are consecutive and every m_k is odd and
+// below 2^k, as the construction requires.
+constexpr bool tableIsWellFormed() {
+  for (uint32_t row = 0; row < std::size(kJoeKuo); ++row) {
+    const JoeKuoRow& r = kJoeKuo[row];
+    if (r.d != row + 2 || r.s == 0 || r.s > kMaxDegree || r.a >= (1u << (r.s - 1))) return false;
+    for (uint32_t k = 0; k < r.s; ++k) {
+      if (r.m[k] % 2 == 0 || r.m[k] >= (2u << k)) return false;
+    }
+  }
+  return true;
+}
+static_assert(tableIsWellFormed(), "sobol_joe_kuo.inc is malformed");
+
+// A generator matrix stored by columns: column k is what bit k of the index XORs into the result
+// (the direction number v_{k+1} of Bratley & Fox, as a 32-bit fraction).
+using Matrix = std::array<uint32_t, 32>;
+
+constexpr Matrix generatorMatrix(uint32_t dimension) {
+  Matrix v{};
+  if (dimension == 0) {
+    // van der Corput: index bit k becomes fraction bit k, i.e. the bits are reversed.
+    for (uint32_t k = 0; k < 32; ++k) v[k] = 1u << (31 - k);
+    return v;
+  }
+  const JoeKuoRow& row = kJoeKuo[dimension - 1];
+  const uint32_t s = row.s;
+  for (uint32_t k = 0; k < 32; ++k) {
+    if (k < s) {
+      v[k] = row.m[k] << (31 - k);  // m_k / 2^k as a 32-bit fraction
+      continue;
+    }
+    // The recurrence given by the primitive polynomial x^s + a_1 x^(s-1) + ... + a_(s-1) x + 1:
+    // v_k = a_1 v_(k-1) ^ ... ^ a_(s-1) v_(k-s+1) ^ v_(k-s) ^ (v_(k-s) >> s).
+    v[k] = v[k - s] ^ (v[k - s] >> s);
+    for (uint32_t j = 1; j < s; ++j) {
+      if ((row.a >> (s - 1 - j)) & 1) v[k] ^= v[k - j];
+    }
+  }
+  return v;
+}
+
+constexpr std::array<Matrix, kSobolDimensions> buildMatrices() {
+  std::array<Matrix, kSobolDimensions> matrices{};
+  for (uint32_t d = 0; d < kSobolDimensions; ++d) matrices[d] = generatorMatrix(d);
+  return matrices;
+}
+
+// Built by the compiler: no start-up cost and no static-initialisation-order questions.
+constexpr std::array<Matrix, kSobolDimensions> kMatrices = buildMatrices();
+
+// Laine & Karras (2011), with Burley's constants. The constants are even, so `x * c` only carries
+// bits upwards: bit j of the result depends on bits 0..j of the input alone. That makes it a
+// bijection, and, applied to reversed bits, a scramble in which each bit depends only on the
+// bits above it.
+uint32_t laineKarrasPermutation(uint32_t x, uint32_t seed) {
+  x += seed;
+  x ^= x * 0x6c50b47cu;
+  x ^= x * 0xb82f1e52u;
+  x ^= x * 0xc7afe638u;
+  x ^= x * 0x8d22f6e6u;
+  return x;
+}
+
+}  // namespace
+
+uint32_t reverseBits(uint32_t x) {
+  x = (x << 16) | (x >> 16);
+  x = ((x & 0x00ff00ffu) << 8) | ((x & 0xff00ff00u) >> 8);
+  x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
+  x = ((x & 0x33333333u) << 2) | ((x & 0xccccccccu) >> 2);
+  x = ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
+  return x;
+}
+
+uint32_t sobolSample(uint32_t index, uint32_t dimension) {
+  assert(dimension < kSobolDimensions);
+  const Matrix& columns = kMatrices[dimension];
+  uint32_t x = 0;
+  for (uint32_t k = 0; index != 0; index >>= 1, ++k) {
+    if (index & 1) x ^= columns[k];  // matrix-vector product over GF(2)
+  }
+  return x;
+}
+
+uint32_t nestedUniformScramble(uint32_t x, uint32_t seed) {
+  return reverseBits(laineKarrasPermutation(reverseBits(x), seed));
+}
+
+}  // namespace pathway

@@ -1,0 +1,28 @@
+// The Sobol' sequence (Joe & Kuo direction numbers) and hash-based Owen scrambling (Burley 2020,
+// "Practical Hash-based Owen Scrambling", JCGT 9(4)).
+//
+// Values are 32-bit fixed-point fractions: x / 2^32 is the coordinate in [0, 1).
+#pragma once
+
+#include <cstdint>
+
+namespace pathway {
+
+// Dimensions with generator matrices: dimension 0 is van der Corput, 1..63 come from the first
+// lines of new-joe-kuo-6.21201 (see sobol_joe_kuo.inc).
+constexpr uint32_t kSobolDimensions = 64;
+
+// Coordinate `dimension` (< kSobolDimensions) of point `index` of the unscrambled sequence, in
+// natural order (not Gray-code order), so point i is a pure function of i. Every aligned block of
+// 2^m consecutive points is a net; dimension 0 is the bit reversal of `index`.
+uint32_t sobolSample(uint32_t index, uint32_t dimension);
+
+// Nested uniform (Owen) scrambling in base 2 of a 32-bit fraction: each bit is flipped by a
+// pseudo-random function of the bits above it, as Owen's random tree of permutations does.
+// Keeps every (t,m,s)-net a (t,m,s)-net with the same t. Also a bijection on 32-bit integers,
+// which is what makes it usable for shuffling sample indices.
+uint32_t nestedUniformScramble(uint32_t x, uint32_t seed);
+
+uint32_t reverseBits(uint32_t x);
+
+}  // namespace pathway
