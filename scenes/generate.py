@@ -1,0 +1,783 @@
+#!/usr/bin/env python3
+"""Writes Pathway's test scenes as glTF 2.0 files.
+
+Python 3 standard library only; the output is deterministic (same bytes on every run), so
+re-running the script leaves `git diff` empty.
+
+    python3 scenes/generate.py                     # every committed scene, then checks them
+    python3 scenes/generate.py --open-plane SCALE OFFSET OUT.gltf
+    python3 scenes/generate.py --small-light SIDE OUT.gltf
+    python3 scenes/generate.py --grid N OUT.gltf   # 2*N*N triangles, external OUT.bin
+    python3 scenes/generate.py --check FILE...     # re-read and check glTF files
+
+Conventions (shared with framework/scene/gltf_loader.h): metres; a triangle's front face is the
+one its vertices wind counter-clockwise around (normal = cross(p1 - p0, p2 - p0)); walls of closed
+rooms face into the room; emitters emit from their front face unless the material is
+doubleSided; the glTF camera looks down its local -Z with +Y up; the constant background
+radiance lives in scenes[0].extras.pathway_background.
+
+The module is importable: open_plane(scale, offset), small_light(side) and the other scene
+functions return glTF dicts, write_gltf() writes one, check_gltf() re-reads and checks a file.
+"""
+
+import argparse
+import base64
+import json
+import math
+import os
+import struct
+import sys
+import zlib
+from array import array
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from gltf_check import (EMISSIVE_STRENGTH, GltfError, add, centroid, check_gltf,  # noqa: E402
+                        cross, dot, f32, normalize, scale, sub, transform_point, transform_vector)
+
+GENERATOR = "Pathway scenes/generate.py"
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+# glTF enums
+FLOAT, UNSIGNED_INT = 5126, 5125
+ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER = 34962, 34963
+REPEAT = 10497
+
+
+# --------------------------------------------------------------------------------------------
+# Quaternion helpers (vectors are tuples; quaternions are (x, y, z, w) as in glTF)
+# --------------------------------------------------------------------------------------------
+
+def tidy(x):
+    """Flushes rounding dust (cos(pi/2) = 6e-17) to zero so the JSON stays readable."""
+    return 0.0 if abs(x) < 1e-12 else x
+
+
+def quat_axis_angle(axis, angle):
+    s = math.sin(0.5 * angle)
+    return (axis[0] * s, axis[1] * s, axis[2] * s, math.cos(0.5 * angle))
+
+
+def quat_mul(a, b):
+    ax, ay, az, aw = a
+    bx, by, bz, bw = b
+    return (aw * bx + ax * bw + ay * bz - az * by,
+            aw * by - ax * bz + ay * bw + az * bx,
+            aw * bz + ax * by - ay * bx + az * bw,
+            aw * bw - ax * bx - ay * by - az * bz)
+
+
+def look_rotation(direction):
+    """Quaternion turning the camera's local -Z onto `direction`, keeping the horizon level
+    (a yaw about world Y applied after a pitch about local X)."""
+    dx, dy, dz = normalize(direction)
+    yaw = math.atan2(-dx + 0.0, -dz)  # + 0.0 turns -0.0 into 0.0: straight +z is +180 deg
+    pitch = math.atan2(dy, math.hypot(dx, dz))
+    q = quat_mul(quat_axis_angle((0.0, 1.0, 0.0), yaw), quat_axis_angle((1.0, 0.0, 0.0), pitch))
+    return tuple(tidy(c) for c in q)
+
+
+# --------------------------------------------------------------------------------------------
+# float32 helpers: positions are stored as float32, so accessor min/max must be float32 values
+# --------------------------------------------------------------------------------------------
+
+def f32_json(x):
+    """The shortest decimal that reads back as the same float32 (0.5528 rather than
+    0.5527999997138977), so min/max match the packed data exactly and stay readable."""
+    v = f32(x)
+    for digits in range(1, 10):
+        s = float("%.*g" % (digits, v))
+        if f32(s) == v:
+            return s
+    return v
+
+
+def pack(typecode, values):
+    """Packs numbers little-endian: 'f' float32, 'I' uint32, 'H' uint16, 'B' uint8."""
+    a = array(typecode, values)
+    if typecode == "I":
+        assert a.itemsize == 4, "array('I') is not 32-bit on this platform"
+    if sys.byteorder == "big":
+        a.byteswap()
+    return a.tobytes()
+
+
+def data_uri(mime, payload):
+    return "data:%s;base64,%s" % (mime, base64.b64encode(payload).decode("ascii"))
+
+
+# --------------------------------------------------------------------------------------------
+# Minimal PNG writer (8-bit RGB, no interlace): signature, IHDR, one IDAT, IEND
+# --------------------------------------------------------------------------------------------
+
+def png_rgb(width, height, pixel):
+    """pixel(x, y) -> (r, g, b) bytes, row 0 at the top."""
+    def chunk(kind, body):
+        return (struct.pack(">I", len(body)) + kind + body
+                + struct.pack(">I", zlib.crc32(kind + body) & 0xFFFFFFFF))
+
+    raw = bytearray()
+    for y in range(height):
+        raw.append(0)  # filter type 0 (None) for every scanline
+        for x in range(width):
+            raw.extend(pixel(x, y))
+    ihdr = struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr)
+            + chunk(b"IDAT", zlib.compress(bytes(raw), 9)) + chunk(b"IEND", b""))
+
+
+def checkerboard_png(n=4, light=255, dark=128):
+    """n x n checkerboard; texel (0, 0) (top-left, glTF uv (0, 0)) is the light one.
+    sRGB 255 decodes to linear 1.0, sRGB 128 to linear 0.2158605."""
+    return png_rgb(n, n, lambda x, y: (light,) * 3 if (x + y) % 2 == 0 else (dark,) * 3)
+
+
+# --------------------------------------------------------------------------------------------
+# Tiny glTF writer: float32 positions / texcoords and uint32 indices packed into ONE buffer
+# (embedded as a base64 data URI unless an external .bin is asked for)
+# --------------------------------------------------------------------------------------------
+
+def emission_to_gltf(radiance):
+    """emissiveFactor must stay in [0, 1]; anything brighter moves into the emissive strength."""
+    peak = max(radiance)
+    if peak <= 1.0:
+        return [float(c) for c in radiance], None
+    return [c / peak for c in radiance], float(peak)
+
+
+class GltfBuilder:
+    def __init__(self):
+        self.blob = bytearray()
+        self.lists = {k: [] for k in ("nodes", "cameras", "meshes", "materials", "textures",
+                                      "images", "samplers", "accessors", "bufferViews")}
+        self.scene_nodes = []
+        self.extensions_used = set()
+
+    def _append(self, kind, item):
+        self.lists[kind].append(item)
+        return len(self.lists[kind]) - 1
+
+    def _buffer_view(self, payload, target):
+        while len(self.blob) % 4:  # float32 / uint32 data must be 4-byte aligned
+            self.blob.append(0)
+        view = {"buffer": 0, "byteOffset": len(self.blob), "byteLength": len(payload),
+                "target": target}
+        self.blob.extend(payload)
+        return self._append("bufferViews", view)
+
+    def _accessor(self, payload, target, component_type, count, kind, bounds=None):
+        accessor = {"bufferView": self._buffer_view(payload, target),
+                    "componentType": component_type, "count": count, "type": kind}
+        if bounds is not None:
+            accessor["min"], accessor["max"] = bounds
+        return self._append("accessors", accessor)
+
+    def material(self, name, base_color, emission=(0.0, 0.0, 0.0), double_sided=False,
+                 texture=None):
+        pbr = {"baseColorFactor": [float(c) for c in base_color] + [1.0],
+               "metallicFactor": 0.0, "roughnessFactor": 1.0}
+        if texture is not None:
+            pbr["baseColorTexture"] = {"index": texture}
+        mat = {"name": name, "pbrMetallicRoughness": pbr}
+        if max(emission) > 0.0:
+            factor, strength = emission_to_gltf(emission)
+            mat["emissiveFactor"] = factor
+            if strength is not None:
+                mat["extensions"] = {EMISSIVE_STRENGTH: {"emissiveStrength": strength}}
+                self.extensions_used.add(EMISSIVE_STRENGTH)
+        if double_sided:
+            mat["doubleSided"] = True
+        return self._append("materials", mat)
+
+    def png_texture(self, name, png):
+        image = self._append("images", {"name": name, "uri": data_uri("image/png", png)})
+        sampler = self._append("samplers", {"wrapS": REPEAT, "wrapT": REPEAT})
+        return self._append("textures", {"sampler": sampler, "source": image})
+
+    def mesh(self, name, positions, triangles, material, texcoords=None):
+        """positions: [(x, y, z)], triangles: [(i, j, k)] counter-clockwise from the front,
+        texcoords: [(u, v)] or None."""
+        bounds = ([f32_json(min(p[i] for p in positions)) for i in range(3)],
+                  [f32_json(max(p[i] for p in positions)) for i in range(3)])
+        uv = None if texcoords is None else pack("f", [c for t in texcoords for c in t])
+        return self.packed_mesh(name, pack("f", [c for p in positions for c in p]), bounds,
+                                pack("I", [i for t in triangles for i in t]), material, uv)
+
+    def packed_mesh(self, name, position_bytes, bounds, index_bytes, material,
+                    texcoord_bytes=None):
+        """A mesh (and its node) from packed little-endian float32 xyz positions, their
+        ([min], [max]) bounds, uint32 triangle indices and optional float32 uv pairs."""
+        count = len(position_bytes) // 12
+        attributes = {"POSITION": self._accessor(position_bytes, ARRAY_BUFFER, FLOAT, count,
+                                                 "VEC3", bounds)}
+        if texcoord_bytes is not None:
+            attributes["TEXCOORD_0"] = self._accessor(texcoord_bytes, ARRAY_BUFFER, FLOAT, count,
+                                                      "VEC2")
+        indices = self._accessor(index_bytes, ELEMENT_ARRAY_BUFFER, UNSIGNED_INT,
+                                 len(index_bytes) // 4, "SCALAR")
+        mesh = self._append("meshes", {"name": name, "primitives": [
+            {"attributes": attributes, "indices": indices, "material": material}]})
+        node = self._append("nodes", {"name": name, "mesh": mesh})
+        self.scene_nodes.append(node)
+        return node
+
+    def camera(self, position, direction, yfov, aspect_ratio=1.0, znear=0.01):
+        cam = self._append("cameras", {"name": "camera", "type": "perspective", "perspective": {
+            "yfov": yfov, "aspectRatio": aspect_ratio, "znear": znear}})
+        node = self._append("nodes", {"name": "camera", "camera": cam,
+                                      "translation": [float(c) for c in position],
+                                      "rotation": list(look_rotation(direction))})
+        self.scene_nodes.append(node)
+        return node
+
+    def build(self, background=None, buffer_uri=None):
+        """The glTF dict; the buffer is embedded unless buffer_uri names an external file
+        (whose bytes are then self.blob)."""
+        doc = {"asset": {"version": "2.0", "generator": GENERATOR}}
+        if self.extensions_used:
+            doc["extensionsUsed"] = sorted(self.extensions_used)
+        scene = {"nodes": list(self.scene_nodes)}
+        if background is not None:
+            scene["extras"] = {"pathway_background": [float(c) for c in background]}
+        doc["scene"] = 0
+        doc["scenes"] = [scene]
+        for kind, items in self.lists.items():
+            if items:
+                doc[kind] = items
+        uri = buffer_uri or data_uri("application/octet-stream", bytes(self.blob))
+        doc["buffers"] = [{"byteLength": len(self.blob), "uri": uri}]
+        return doc
+
+
+def write_gltf(path, doc):
+    text = json.dumps(doc, indent=2, allow_nan=False) + "\n"
+    with open(path, "w", encoding="ascii", newline="\n") as f:
+        f.write(text)
+
+
+# --------------------------------------------------------------------------------------------
+# Shapes
+# --------------------------------------------------------------------------------------------
+
+def quad(p0, p1, p2, p3):
+    """A planar-ish quad as (positions, triangles), front face counter-clockwise p0->p1->p2."""
+    return [p0, p1, p2, p3], [(0, 1, 2), (0, 2, 3)]
+
+
+def floor_quad(x0, x1, z0, z1, y=0.0, up=True):
+    """Horizontal rectangle at height y, facing +y (up) or -y."""
+    a, b, c, d = (x0, y, z0), (x0, y, z1), (x1, y, z1), (x1, y, z0)
+    return quad(a, b, c, d) if up else quad(a, d, c, b)
+
+
+def other_diagonal(part):
+    """The same quad split along its other diagonal (vertex order rotated, winding kept)."""
+    positions, triangles = part
+    return positions[1:] + positions[:1], triangles
+
+
+def merge(*parts):
+    """Concatenates (positions, triangles) pairs into one mesh."""
+    positions, triangles = [], []
+    for pos, tris in parts:
+        base = len(positions)
+        positions.extend(pos)
+        triangles.extend((a + base, b + base, c + base) for a, b, c in tris)
+    return positions, triangles
+
+
+def icosphere(subdivisions, radius=1.0, center=(0.0, 0.0, 0.0)):
+    """Icosahedron subdivided `subdivisions` times (20 * 4^n triangles), faces outward."""
+    t = (1.0 + math.sqrt(5.0)) / 2.0
+    verts = [normalize(v) for v in [
+        (-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t),
+        (0, -1, -t), (0, 1, -t), (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1)]]
+    faces = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4),
+             (11, 10, 2), (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8),
+             (3, 8, 9), (4, 9, 5), (2, 4, 11), (6, 2, 10), (8, 6, 7), (9, 8, 1)]
+    for _ in range(subdivisions):
+        midpoints = {}
+
+        def midpoint(i, j):
+            key = (min(i, j), max(i, j))
+            if key not in midpoints:
+                verts.append(normalize(scale(add(verts[i], verts[j]), 0.5)))
+                midpoints[key] = len(verts) - 1
+            return midpoints[key]
+
+        new_faces = []
+        for a, b, c in faces:
+            ab, bc, ca = midpoint(a, b), midpoint(b, c), midpoint(c, a)
+            new_faces += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
+        faces = new_faces
+    return [add(center, scale(v, radius)) for v in verts], faces
+
+
+# --------------------------------------------------------------------------------------------
+# Scenes
+# --------------------------------------------------------------------------------------------
+
+# Cornell Box data, Cornell University Program of Computer Graphics
+# (http://www.graphics.cornell.edu/online/box/data.html), millimetres, vertex order as published.
+# Cross-checked against two public copies: a mirror of that page
+# (https://www.graphicon.ru/oldgr/courses/cg_el99/c_box/data.htm) and the same vertices scaled
+# by 0.1 in GaborDrescher/pathTracer, meshes/{floor,ceil,back,left,right,smallbox,largebox,
+# light}.h. The measured room is not a perfect box (e.g. the floor is 552.8 mm wide at the front
+# but 549.6 mm at the back, the red wall is slightly tilted): the coordinates are kept as they are.
+# The published order already winds every wall so its front face looks into the box, every block
+# face outward and the light downward; cornell_box() re-checks that and stops if it ever is not.
+CORNELL_MM = {
+    "floor": [[(552.8, 0.0, 0.0), (0.0, 0.0, 0.0), (0.0, 0.0, 559.2), (549.6, 0.0, 559.2)]],
+    "ceiling": [[(556.0, 548.8, 0.0), (556.0, 548.8, 559.2), (0.0, 548.8, 559.2),
+                 (0.0, 548.8, 0.0)]],
+    "back_wall": [[(549.6, 0.0, 559.2), (0.0, 0.0, 559.2), (0.0, 548.8, 559.2),
+                   (556.0, 548.8, 559.2)]],
+    "right_wall_green": [[(0.0, 0.0, 559.2), (0.0, 0.0, 0.0), (0.0, 548.8, 0.0),
+                          (0.0, 548.8, 559.2)]],
+    "left_wall_red": [[(552.8, 0.0, 0.0), (549.6, 0.0, 559.2), (556.0, 548.8, 559.2),
+                       (556.0, 548.8, 0.0)]],
+    "short_block": [
+        [(130, 165, 65), (82, 165, 225), (240, 165, 272), (290, 165, 114)],
+        [(290, 0, 114), (290, 165, 114), (240, 165, 272), (240, 0, 272)],
+        [(130, 0, 65), (130, 165, 65), (290, 165, 114), (290, 0, 114)],
+        [(82, 0, 225), (82, 165, 225), (130, 165, 65), (130, 0, 65)],
+        [(240, 0, 272), (240, 165, 272), (82, 165, 225), (82, 0, 225)]],
+    "tall_block": [
+        [(423, 330, 247), (265, 330, 296), (314, 330, 456), (472, 330, 406)],
+        [(423, 0, 247), (423, 330, 247), (472, 330, 406), (472, 0, 406)],
+        [(472, 0, 406), (472, 330, 406), (314, 330, 456), (314, 0, 456)],
+        [(314, 0, 456), (314, 330, 456), (265, 330, 296), (265, 0, 296)],
+        [(265, 0, 296), (265, 330, 296), (423, 330, 247), (423, 0, 247)]],
+    # The light sits in the ceiling plane (y = 548.8) in the data; it is lowered by 0.5 mm below.
+    "light": [[(343.0, 548.8, 227.0), (343.0, 548.8, 332.0), (213.0, 548.8, 332.0),
+               (213.0, 548.8, 227.0)]],
+}
+CORNELL_LIGHT_DROP_MM = 0.5
+CORNELL_BOX_CENTER_MM = (278.0, 274.4, 279.6)  # middle of the room, used for facing checks
+
+
+def quad_normal(q):
+    return cross(sub(q[1], q[0]), sub(q[2], q[0]))
+
+
+def cornell_facing_ok(name, quads):
+    """True when every quad of the part faces the way the scene needs."""
+    if name == "light":
+        return all(quad_normal(q)[1] < 0.0 for q in quads)
+    if name.endswith("_block"):  # outward: away from the block's centre
+        c = centroid([p for q in quads for p in q])
+        return all(dot(quad_normal(q), sub(centroid(q), c)) > 0.0 for q in quads)
+    return all(dot(quad_normal(q), sub(CORNELL_BOX_CENTER_MM, centroid(q))) > 0.0 for q in quads)
+
+
+def cornell_box():
+    """Cornell box (measured geometry, RGB approximations of the measured reflectances).
+
+    Tests: the whole pipeline on the standard reference scene; compare against a converged
+    reference render (no closed form). Looking from the camera, the red wall (x ~ 0.55 m) is
+    on the LEFT and the green wall (x = 0) on the RIGHT: the camera's 180-degree turn about Y
+    maps its local +X (image right) onto world -X. check_cornell() verifies this by projection:
+    the red wall's centre lands at image x = -0.715, the green wall's at +0.721 (x in [-1, 1],
+    -1 = left edge).
+    Light: radiance (17, 12, 4), albedo 0.78, lowered 0.5 mm below the (hole-less) ceiling.
+    """
+    b = GltfBuilder()
+    white = b.material("white", (0.725, 0.71, 0.68))
+    red = b.material("red", (0.63, 0.065, 0.05))
+    green = b.material("green", (0.14, 0.45, 0.091))
+    light = b.material("light", (0.78, 0.78, 0.78), emission=(17.0, 12.0, 4.0))
+    materials = {"left_wall_red": red, "right_wall_green": green, "light": light}
+    for name, quads_mm in CORNELL_MM.items():
+        if not cornell_facing_ok(name, quads_mm):
+            raise SystemExit("cornell_box: %s does not face the expected way" % name)
+        drop = CORNELL_LIGHT_DROP_MM if name == "light" else 0.0
+        quads_m = [[(x * 0.001, (y - drop) * 0.001, z * 0.001) for x, y, z in q] for q in quads_mm]
+        positions, triangles = merge(*(quad(*q) for q in quads_m))
+        b.mesh(name, positions, triangles, materials.get(name, white))
+    # 35 mm lens on 25 mm x 25 mm film: yfov = 2 atan(12.5 / 35) = 0.68605 rad (39.31 degrees).
+    b.camera((0.278, 0.273, -0.8), (0.0, 0.0, 1.0), 2.0 * math.atan(0.0125 / 0.035))
+    return b.build()
+
+
+def furnace_closed(albedo=0.5, emission=1.0):
+    """Closed furnace: camera at the centre of a 2 m cube whose inward-facing walls all have
+    albedo a = 0.5 and emit Le = 1 (one-sided, into the room).
+
+    Expected radiance at every pixel: Le / (1 - a) = 2 with unlimited bounces; with at most D
+    bounces the geometric series stops after D + 1 terms: Le (1 - a^(D+1)) / (1 - a)
+    (D = 0: 1, D = 1: 1.5, D = 2: 1.75, ...).
+    """
+    b = GltfBuilder()
+    wall = b.material("furnace_wall", (albedo,) * 3, emission=(emission,) * 3)
+    lo, hi = -1.0, 1.0
+    positions, triangles = merge(
+        floor_quad(lo, hi, lo, hi, y=lo, up=True),                         # floor, faces +y
+        floor_quad(lo, hi, lo, hi, y=hi, up=False),                        # ceiling, faces -y
+        quad((lo, lo, lo), (hi, lo, lo), (hi, hi, lo), (lo, hi, lo)),      # z = -1, faces +z
+        quad((lo, lo, hi), (lo, hi, hi), (hi, hi, hi), (hi, lo, hi)),      # z = +1, faces -z
+        quad((lo, lo, lo), (lo, hi, lo), (lo, hi, hi), (lo, lo, hi)),      # x = -1, faces +x
+        quad((hi, lo, lo), (hi, lo, hi), (hi, hi, hi), (hi, hi, lo)))      # x = +1, faces -x
+    b.mesh("furnace_walls", positions, triangles, wall)
+    b.camera((0.0, 0.0, 0.0), (0.3, -0.2, -1.0), 1.2)
+    return b.build()
+
+
+def white_furnace():
+    """White furnace: a Lambertian icosphere (3 subdivisions, 1280 triangles, radius 1 m,
+    outward faces) of albedo 1, no emitters, constant background radiance (1, 1, 1).
+
+    Expected: every pixel is exactly 1, whether it sees the sphere or the background. The
+    polyhedron is convex, so a bounced ray never meets it again: any depth >= 1 gives 1.
+    """
+    b = GltfBuilder()
+    white = b.material("albedo_one", (1.0, 1.0, 1.0))
+    positions, triangles = icosphere(3)
+    b.mesh("sphere", positions, triangles, white)
+    b.camera((0.0, 0.0, 4.0), (0.0, 0.0, -1.0), 0.7)
+    return b.build(background=(1.0, 1.0, 1.0))
+
+
+def open_plane(scale_factor=1.0, offset=0.0):
+    """Open plane: a 200 m x 200 m square (two triangles) of albedo 1 facing +y, the camera
+    1 m above and 1 m back, looking 45 degrees down. Nothing is above the plane, so ambient
+    occlusion is 1 at every pixel, for every AO distance.
+
+    Robustness variants: every coordinate (vertices and the camera position, and znear) is
+    multiplied by `scale_factor`, then (offset, offset, offset) is added to every vertex and to
+    the camera position. The offset is baked into the vertex data (not a node translation), so
+    the float32 positions really sit far from the origin. The expected AO stays 1.
+    """
+    s, o = float(scale_factor), float(offset)
+
+    def place(p):
+        return (p[0] * s + o, p[1] * s + o, p[2] * s + o)
+
+    b = GltfBuilder()
+    white = b.material("albedo_one", (1.0, 1.0, 1.0))
+    # Off-centre in z so that the diagonal both triangles share (z = x - 50) stays out of view.
+    positions, triangles = floor_quad(-100.0, 100.0, -150.0, 50.0)
+    b.mesh("plane", [place(p) for p in positions], triangles, white)
+    b.camera(place((0.0, 1.0, 1.0)), (0.0, -1.0, -1.0), 0.6, znear=0.01 * s)
+    return b.build()
+
+
+def ceiling():
+    """Floor under a parallel ceiling: floor (albedo 1, facing up) at y = 0, ceiling (facing
+    down) at y = h = 1, both 400 m x 400 m; camera between them looking down at the floor.
+
+    Expected cosine-weighted AO with distance r at a floor point (the unoccluded fraction):
+    a direction at angle theta from the normal meets the ceiling after h / cos(theta), so it is
+    occluded iff h / cos(theta) < r, i.e. cos(theta) > h / r. With the cosine-weighted pdf
+    p(theta) = cos(theta) sin(theta) / pi, P(cos(theta) > c) = 1 - c^2, hence
+        AO(r) = 1               for r <= h,
+        AO(r) = (h / r)^2       for r >= h     (r = 2: 0.25, r = 4: 0.0625).
+    The planes' edges are at least 100 m away: they do not matter for r <= 4 (the ceiling is
+    met within h tan(theta) <= 3.9 m). Off-centre in z so that the quads' diagonals stay out of
+    view.
+    """
+    b = GltfBuilder()
+    white = b.material("albedo_one", (1.0, 1.0, 1.0))
+    b.mesh("floor", *floor_quad(-200.0, 200.0, -300.0, 100.0, y=0.0, up=True), white)
+    b.mesh("ceiling", *floor_quad(-200.0, 200.0, -300.0, 100.0, y=1.0, up=False), white)
+    b.camera((0.0, 0.5, 0.5), (0.0, -math.sqrt(3.0), -1.0), 0.5)  # 60 degrees down
+    return b.build()
+
+
+def wall():
+    """Floor (facing up, x in [0, 200], z in [-100, 100]) meeting a vertical wall along x = 0
+    (facing +x, 200 m tall); camera 1 m from the wall looking at the floor near it.
+
+    Expected AO with infinite distance: 1/2 at every visible point. A floor point sees the
+    wall in exactly the directions with a -x component, half of the cosine-weighted hemisphere
+    (and a wall point, symmetrically, loses the half pointing down at the floor). The finite
+    200 m extents let a few grazing directions past the far edges: AO ~ 1/2 + 0.004 d for a
+    point d metres from the other plane. Numerically integrated at the visible points:
+    0.5000 .. 0.5010.
+    """
+    b = GltfBuilder()
+    white = b.material("albedo_one", (1.0, 1.0, 1.0))
+    b.mesh("floor", *floor_quad(0.0, 200.0, -100.0, 100.0), white)
+    b.mesh("wall", *quad((0.0, 0.0, -100.0), (0.0, 200.0, -100.0), (0.0, 200.0, 100.0),
+                         (0.0, 0.0, 100.0)), white)
+    b.camera((1.0, 0.5, 0.0), (-1.0, -math.tan(math.radians(30.0)), 0.0), 1.0)
+    return b.build()
+
+
+def corner():
+    """Inside corner: floor (facing up) plus two perpendicular walls, x = 0 facing +x and
+    z = 0 facing +z, all 200 m; camera looking into the corner.
+
+    Expected AO with infinite distance: 1/4 at every visible point: only directions with both
+    +x and +z components escape, a quarter of the cosine-weighted hemisphere by symmetry (the
+    same holds on either wall). The finite 200 m extents add about 0.003 per metre of distance
+    from the corner; numerically integrated at the visible points: 0.2500 .. 0.2515.
+    """
+    b = GltfBuilder()
+    white = b.material("albedo_one", (1.0, 1.0, 1.0))
+    b.mesh("floor", *other_diagonal(floor_quad(0.0, 200.0, 0.0, 200.0)), white)
+    b.mesh("wall_x0", *other_diagonal(quad((0.0, 0.0, 0.0), (0.0, 200.0, 0.0),
+                                           (0.0, 200.0, 200.0), (0.0, 0.0, 200.0))), white)
+    b.mesh("wall_z0", *other_diagonal(quad((0.0, 0.0, 0.0), (200.0, 0.0, 0.0),
+                                           (200.0, 200.0, 0.0), (0.0, 200.0, 0.0))), white)
+    # Aimed a little off the symmetry plane x = z, so that no pixel centre lands exactly on the
+    # corner line x = z = 0, where AO is ill-defined.
+    b.camera((1.3, 0.9, 1.1), (-1.1, -0.75, -0.75), 1.0)
+    return b.build()
+
+
+def small_light_expected_radiance(side, height=1.0, albedo=0.5, power=1.0):
+    """Radiance of the floor point right below the centre of small_light(side).
+
+    Le = power / (pi side^2); E = pi Le F with F the form factor from a differential area to a
+    parallel square centred above it (four corner rectangles a = b = side / 2):
+    F_corner = 1/(2 pi) [A/sqrt(1+A^2) atan(B/sqrt(1+A^2)) + B/sqrt(1+B^2) atan(A/sqrt(1+B^2))],
+    A = B = side / (2 height); L = albedo E / pi.
+    As side -> 0, E -> power / (pi height^2) and L -> albedo power / (pi^2 height^2).
+    """
+    le = power / (math.pi * side * side)
+    a = 0.5 * side / height
+    r = math.sqrt(1.0 + a * a)
+    f = 4.0 * (1.0 / (2.0 * math.pi)) * 2.0 * (a / r) * math.atan(a / r)
+    return albedo * (math.pi * le * f) / math.pi
+
+
+def small_light(side=0.1, height=1.0, power=1.0):
+    """Small light: a floor (albedo 0.5, facing up, 100 m x 100 m) under a square emitter of
+    side s centred 1 m above the origin, facing down, black, with fixed power Phi = 1 W:
+    Le = Phi / (pi s^2) (power = radiance x pi x area for a one-sided Lambertian emitter).
+
+    Expected radiance of the floor point below the light (the origin, at the image centre):
+    small_light_expected_radiance(s) = 0.050492 for s = 0.1, tending to the point-light limit
+    0.5 / pi^2 = 0.050661 as s -> 0 (0.33 % below it at s = 0.1, 0.0033 % at s = 0.01). The
+    floor sees nothing but the (black) light, so the value holds for any bounce depth >= 1.
+    Shrinking s at fixed power barely changes the expected image; estimators that only find
+    the light by BSDF sampling get noisier without bound, light sampling does not.
+    """
+    b = GltfBuilder()
+    floor_mat = b.material("floor", (0.5, 0.5, 0.5))
+    le = power / (math.pi * side * side)
+    light_mat = b.material("light", (0.0, 0.0, 0.0), emission=(le, le, le))
+    h = 0.5 * side
+    # Off-centre in z so that the floor's diagonal (z = x - 20) misses the point below the light.
+    b.mesh("floor", *floor_quad(-50.0, 50.0, -70.0, 30.0), floor_mat)
+    b.mesh("light", *floor_quad(-h, h, -h, h, y=height, up=False), light_mat)
+    b.camera((0.0, 0.6, 1.5), (0.0, -0.6, -1.5), 0.7)  # aims at the origin, light out of view
+    return b.build()
+
+
+def light_touching_wall():
+    """An emitter touching a wall: a room corner (floor y = 0, back wall z = 0 facing +z, left
+    wall x = -2 facing +x; albedo 0.5) with a horizontal 1 m x 0.5 m emitter at y = 1 facing
+    down (radiance 10, one-sided) whose edge z = 0 lies on the back wall.
+
+    Tests: robustness at the contact line. Radiance there is bounded (irradiance <= pi Le), but
+    the light-sampling geometry term grows without bound as the distance goes to 0, so the
+    output must stay finite (no NaN / Inf, no runaway fireflies) on the wall just under the
+    light. No closed-form value.
+    """
+    b = GltfBuilder()
+    grey = b.material("grey", (0.5, 0.5, 0.5))
+    light_mat = b.material("light", (0.0, 0.0, 0.0), emission=(10.0, 10.0, 10.0))
+    b.mesh("floor", *floor_quad(-2.0, 2.0, 0.0, 4.0), grey)
+    b.mesh("back_wall", *quad((-2.0, 0.0, 0.0), (2.0, 0.0, 0.0), (2.0, 2.0, 0.0), (-2.0, 2.0, 0.0)),
+           grey)
+    b.mesh("left_wall", *quad((-2.0, 0.0, 0.0), (-2.0, 2.0, 0.0), (-2.0, 2.0, 4.0),
+                              (-2.0, 0.0, 4.0)), grey)
+    b.mesh("light", *floor_quad(-0.5, 0.5, 0.0, 0.5, y=1.0, up=False), light_mat)
+    b.camera((0.4, 0.3, 1.6), (-0.4, 0.6, -1.4), 1.0)  # looks up at the contact line
+    return b.build()
+
+
+def textured_quad():
+    """A 1 m x 1 m quad (z = 0, facing +z) with a 4 x 4 checkerboard baseColorTexture (PNG data
+    URI, TEXCOORD_0, repeat sampler), lit only by a constant background of radiance 1.
+
+    Expected: nothing occludes the quad's hemisphere, so a texel of albedo rho shows radiance
+    rho: the light squares 1.0, the dark squares 0.2158605 (sRGB 128 decoded to linear), at
+    texel centres (bilinear filtering blends across the squares' edges).
+    uv (0, 0), the light top-left texel of the PNG, sits at the quad's top-left corner
+    (-0.5, 0.5, 0) as seen from the camera, so the image's top-left square is light. The
+    background around the quad is 1.
+    """
+    b = GltfBuilder()
+    tex = b.png_texture("checkerboard", checkerboard_png())
+    mat = b.material("checker", (1.0, 1.0, 1.0), texture=tex)
+    positions = [(-0.5, 0.5, 0.0), (-0.5, -0.5, 0.0), (0.5, -0.5, 0.0), (0.5, 0.5, 0.0)]
+    texcoords = [(0.0, 0.0), (0.0, 1.0), (1.0, 1.0), (1.0, 0.0)]
+    b.mesh("quad", positions, [(0, 1, 2), (0, 2, 3)], mat, texcoords=texcoords)
+    b.camera((0.0, 0.0, 2.0), (0.0, 0.0, -1.0), 2.0 * math.atan(0.6 / 2.0))
+    return b.build(background=(1.0, 1.0, 1.0))
+
+
+def grid(n, bin_uri):
+    """Height-field grid for the memory benchmark: n x n cells over [-1, 1]^2 (2 n^2 triangles,
+    (n + 1)^2 vertices; n = 708 gives 1,002,528), albedo 0.8, lit by a background of 1.
+    Returns (doc, blob) with the buffer in an external file named bin_uri."""
+    positions = array("f")
+    for j in range(n + 1):
+        z = -1.0 + 2.0 * j / n
+        for i in range(n + 1):
+            x = -1.0 + 2.0 * i / n
+            positions.extend((x, 0.05 * math.sin(7.0 * x) * math.cos(5.0 * z), z))
+    indices = array("I")
+    row = n + 1
+    for j in range(n):
+        for i in range(n):
+            v = j * row + i  # (x, z) -> (x, z + dz) -> (x + dx, z + dz) winds counter-clockwise
+            indices.extend((v, v + row, v + row + 1, v, v + row + 1, v + 1))  # seen from +y
+    assert positions.itemsize == 4 and indices.itemsize == 4
+    ys = positions[1::3]
+    y_min, y_max = f32_json(min(ys)), f32_json(max(ys))
+    if sys.byteorder == "big":
+        positions.byteswap()
+        indices.byteswap()
+    b = GltfBuilder()
+    mat = b.material("grid", (0.8, 0.8, 0.8))
+    bounds = ([-1.0, y_min, -1.0], [1.0, y_max, 1.0])
+    b.packed_mesh("grid", positions.tobytes(), bounds, indices.tobytes(), mat)
+    b.camera((0.0, 1.5, 1.5), (0.0, -1.5, -1.5), 0.9)
+    return b.build(background=(1.0, 1.0, 1.0), buffer_uri=bin_uri), bytes(b.blob)
+
+
+# The committed scenes: file name -> function.
+SCENES = {
+    "cornell_box.gltf": cornell_box,
+    "furnace_closed.gltf": furnace_closed,
+    "white_furnace.gltf": white_furnace,
+    "open_plane.gltf": open_plane,
+    "ceiling.gltf": ceiling,
+    "wall.gltf": wall,
+    "corner.gltf": corner,
+    "small_light.gltf": small_light,
+    "light_touching_wall.gltf": light_touching_wall,
+    "textured_quad.gltf": textured_quad,
+}
+
+
+def check_cornell(scene):
+    """Prints per-wall normals and checks: walls face into the box, blocks outward, light down,
+    and the red wall projects to the left half of the image, the green one to the right."""
+    centre = scale(CORNELL_BOX_CENTER_MM, 0.001)
+    print("  cornell_box normals (unit, per triangle) and facing:")
+    for part in scene["parts"]:
+        name = part["name"]
+        tris = part["triangles"]
+        block_centre = centroid([p for t in tris for p in t])
+        ok = True
+        normals = []
+        for t in tris:
+            nrm = normalize(cross(sub(t[1], t[0]), sub(t[2], t[0])))
+            normals.append(nrm)
+            c = centroid(t)
+            if name == "light":
+                ok &= nrm[1] < -0.999
+            elif name.endswith("_block"):
+                ok &= dot(nrm, sub(c, block_centre)) > 0.0
+            else:
+                ok &= dot(nrm, sub(centre, c)) > 0.0
+        facing = {"light": "down", "short_block": "outward", "tall_block": "outward"}.get(
+            name, "into the box")
+        shown = normals if len(normals) <= 2 else normals[::2]
+        print("    %-17s %s  %s: %s" % (name, " ".join("(%+.4f %+.4f %+.4f)" % n for n in shown),
+                                        facing, "ok" if ok else "WRONG"))
+        if not ok:
+            raise GltfError("cornell_box: %s faces the wrong way" % name)
+    # Projection: image x of a point = dot(d, right) / dot(d, forward) / tan(yfov / 2).
+    world, persp = scene["camera"]
+    eye = transform_point(world, (0.0, 0.0, 0.0))
+    right = transform_vector(world, (1.0, 0.0, 0.0))
+    forward = transform_vector(world, (0.0, 0.0, -1.0))
+    for name, expect in (("left_wall_red", "left"), ("right_wall_green", "right")):
+        part = next(p for p in scene["parts"] if p["name"] == name)
+        d = sub(centroid([p for t in part["triangles"] for p in t]), eye)
+        x = dot(d, right) / dot(d, forward) / math.tan(0.5 * persp["yfov"])
+        side = "left" if x < 0.0 else "right"
+        print("    %-17s centre projects to image x = %+.3f (%s half)" % (name, x, side))
+        if side != expect:
+            raise GltfError("cornell_box: %s appears on the %s" % (name, side))
+
+
+def check_expectations(name, scene):
+    """Scene-specific checks on what the camera sees."""
+    counts = scene.get("coverage", {})
+    seen = set(counts)
+    if scene.get("back_hits"):
+        raise GltfError("%s: the camera sees back faces" % name)
+    needs = {  # mesh names the 9x9 camera rays may hit; None = anything
+        "furnace_closed.gltf": {"furnace_walls"},
+        "open_plane.gltf": {"plane"},
+        "ceiling.gltf": {"floor"},
+        "wall.gltf": {"floor", "wall"},
+        "corner.gltf": {"floor", "wall_x0", "wall_z0"},
+        "small_light.gltf": {"floor"},
+        "white_furnace.gltf": {"sphere", "background"},
+        "textured_quad.gltf": {"quad", "background"},
+    }.get(name)
+    if needs is not None and not seen <= needs:
+        raise GltfError("%s: camera rays hit %s, expected only %s" % (name, seen, needs))
+    must = {"wall.gltf": {"floor", "wall"}, "corner.gltf": {"floor", "wall_x0", "wall_z0"},
+            "white_furnace.gltf": {"sphere", "background"}, "textured_quad.gltf": {"quad"},
+            "light_touching_wall.gltf": {"light", "back_wall"},
+            "cornell_box.gltf": {"left_wall_red", "right_wall_green", "short_block",
+                                 "tall_block", "floor", "ceiling", "back_wall"}}.get(name, set())
+    if not must <= seen:
+        raise GltfError("%s: camera rays miss %s" % (name, must - seen))
+
+
+# --------------------------------------------------------------------------------------------
+# Command line
+# --------------------------------------------------------------------------------------------
+
+def generate_all(directory=HERE):
+    for file, make in SCENES.items():
+        write_gltf(os.path.join(directory, file), make())
+    print("wrote %d scenes to %s" % (len(SCENES), directory))
+    for file in SCENES:
+        scene = check_gltf(os.path.join(directory, file), generator=GENERATOR)
+        check_expectations(file, scene)
+        if file == "cornell_box.gltf":
+            check_cornell(scene)
+    print("small_light expected floor radiance below the light: s = 0.1: %.6f, s -> 0: %.6f"
+          % (small_light_expected_radiance(0.1), 0.5 / math.pi ** 2))
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    group = parser.add_mutually_exclusive_group()
+    group.add_argument("--open-plane", nargs=3, metavar=("SCALE", "OFFSET", "OUT"),
+                       help="write open_plane(SCALE, OFFSET) to OUT")
+    group.add_argument("--small-light", nargs=2, metavar=("SIDE", "OUT"),
+                       help="write small_light(SIDE) (power fixed at 1) to OUT")
+    group.add_argument("--grid", nargs=2, metavar=("N", "OUT"),
+                       help="write a 2*N*N-triangle grid to OUT with an external OUT.bin")
+    group.add_argument("--check", nargs="+", metavar="FILE", help="re-read and check files")
+    args = parser.parse_args(argv)
+    try:
+        if args.open_plane:
+            s, o, out = args.open_plane
+            write_gltf(out, open_plane(float(s), float(o)))
+            check_gltf(out, generator=GENERATOR)
+        elif args.small_light:
+            side, out = args.small_light
+            write_gltf(out, small_light(float(side)))
+            check_gltf(out, generator=GENERATOR)
+        elif args.grid:
+            n, out = int(args.grid[0]), args.grid[1]
+            bin_path = os.path.splitext(out)[0] + ".bin"
+            doc, blob = grid(n, os.path.basename(bin_path))
+            with open(bin_path, "wb") as f:
+                f.write(blob)
+            write_gltf(out, doc)
+            check_gltf(out, coverage=False, generator=GENERATOR)
+        elif args.check:
+            for path in args.check:
+                check_gltf(path)
+        else:
+            generate_all()
+    except GltfError as e:
+        print("error: %s" % e, file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
