@@ -118,7 +118,7 @@ class DiffuseBounceIntegrator : public Integrator {
 };
 const bool registered = registerIntegrator(
     {"bench-bounce", 0, Variant::Reference, "benchmark: camera ray + one diffuse bounce", {},
-     [](const ParamValues&) { return std::make_unique<DiffuseBounceIntegrator>(); }});
+     [](const ParamValues&, const Scene&) { return std::make_unique<DiffuseBounceIntegrator>(); }});
 
 int benchRays(const std::string& scenePath, int width, int repeats) {
   const Scene scene = loadScene(scenePath);

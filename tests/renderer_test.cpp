@@ -93,7 +93,7 @@ TEST(Renderer, CancelledPassLeavesTheFilmUntouched) {
   const Scene scene = test::boxRoom();
   const RayTracer tracer(scene);
   const Camera camera(scene, 32, 32);
-  const auto integrator = findIntegrator("stage1@ref").create(ParamValues{});
+  const auto integrator = findIntegrator("stage1@ref").create(ParamValues{}, scene);
   RenderSettings settings;
   settings.width = settings.height = 32;
   settings.samplesPerPixel = 4;

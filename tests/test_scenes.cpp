@@ -87,4 +87,24 @@ Scene boxRoom() {
   return scene;
 }
 
+Scene smallLight(float side) {
+  Scene scene;
+  scene.sourcePath = "small light (test)";
+  Material floor;
+  floor.baseColor = Color(0.5f);
+  Material light;
+  light.baseColor = Color(0.0f);
+  light.emission = Color(1.0f / (kPi * side * side));
+  scene.materials = {floor, light};
+  addQuad(scene, {-50, 0, 30}, {50, 0, 30}, {50, 0, -70}, {-50, 0, -70}, 0);
+  const float h = 0.5f * side;
+  addQuad(scene, {-h, 1, -h}, {h, 1, -h}, {h, 1, h}, {-h, 1, h}, 1);  // facing down
+  CameraPlacement camera;
+  camera.yfov = 0.7f;
+  camera.cameraToWorld = glm::inverse(glm::lookAt(Vec3(0, 0.6f, 1.5f), Vec3(0), Vec3(0, 1, 0)));
+  scene.camera = camera;
+  finishScene(scene);
+  return scene;
+}
+
 }  // namespace pathway::test

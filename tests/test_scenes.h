@@ -22,6 +22,11 @@ Scene constantScene(const Color& background);
 // edges, occlusion and light for determinism tests.
 Scene boxRoom();
 
+// A floor (albedo 0.5, facing up) under a square emitter of side `side` at height 1 facing down,
+// with radiance 1 / (π side²) so its power stays 1 as it shrinks. The camera looks at the point
+// below the light from (0, 0.6, 1.5); with an odd image size the centre pixel sees that point.
+Scene smallLight(float side);
+
 // Finishes a scene built by hand: materials present, bounds computed.
 void finishScene(Scene& scene);
 

@@ -23,7 +23,7 @@ struct RenderOptions {
   int width = 512;
   int height = 0;  // 0: from the scene camera's aspect ratio, else square
   uint32_t spp = 16;
-  std::string sampler = "independent";
+  std::string sampler;  // empty: the integrator's own default
   uint64_t seed = 0;
   int threads = 0;
   std::string filter = "box";
@@ -36,8 +36,9 @@ struct RenderOptions {
 void listIntegrators() {
   std::printf("Integrators (choose with --integrator NAME, set parameters with -p name=value):\n");
   for (const IntegratorInfo* info : allIntegrators()) {
-    std::printf("\n  %-12s stage %d, %s: %s\n", info->name.c_str(), info->stage,
-                variantName(info->variant), info->summary.c_str());
+    std::printf("\n  %-12s stage %d, %s, sampler %s: %s\n", info->name.c_str(), info->stage,
+                variantName(info->variant), samplerTypeName(info->defaultSampler).c_str(),
+                info->summary.c_str());
     for (const ParamSpec& spec : info->params)
       std::printf("      %-16s %s (default %s, range [%s, %s])\n", spec.name.c_str(),
                   spec.help.c_str(), formatParamValue(spec, spec.defaultValue).c_str(),
@@ -61,7 +62,7 @@ int run(const RenderOptions& options) {
   }
   resolveParams(info.name, info.params, request.params);
   RenderSettings& s = request.settings;
-  s.sampler = parseSamplerType(options.sampler);
+  s.sampler = options.sampler.empty() ? info.defaultSampler : parseSamplerType(options.sampler);
   s.filter = parseFilterType(options.filter);
   s.filterRadius = options.filterRadius;
   s.samplesPerPixel = options.spp;
@@ -146,8 +147,8 @@ Command addRenderCommand(CLI::App& app) {
   render->add_option("--height", options->height,
                      "Image height in pixels (default: from the camera's aspect ratio)")
       ->check(CLI::Range(1, 16384));
-  render->add_option("--sampler", options->sampler, "independent, stratified or sobol")
-      ->capture_default_str();
+  render->add_option("--sampler", options->sampler,
+                     "independent, stratified or sobol (default: the integrator's; stage 3 uses sobol)");
   render->add_option("--seed", options->seed, "Random seed; same seed, same image")
       ->capture_default_str();
   render->add_option("--threads", options->threads, "Worker threads (0: all cores)")

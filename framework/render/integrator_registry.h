@@ -19,8 +19,11 @@ struct IntegratorInfo {
   Variant variant = Variant::Student;
   std::string summary;  // one line for --list
   std::vector<ParamSpec> params;
-  // Builds the integrator; may throw PathwayError for parameter combinations it refuses.
-  std::function<std::unique_ptr<Integrator>(const ParamValues&)> create;
+  // Builds the integrator for a scene; may throw PathwayError for parameter combinations it
+  // refuses (before any rendering starts).
+  std::function<std::unique_ptr<Integrator>(const ParamValues&, const Scene&)> create;
+  // The sampler this stage is meant to be seen with, when the user does not choose one.
+  SamplerType defaultSampler = SamplerType::Independent;
 };
 
 // Registers at static-initialisation time; returns true so it can initialise a static bool.

@@ -42,7 +42,7 @@ RenderResult runRender(const Scene& scene, const RayTracer& tracer, const Render
                        const std::function<void(const RenderStats&)>& onPass) {
   const IntegratorInfo& info = findIntegrator(request.integrator);
   const ParamValues params = resolveParams(info.name, info.params, request.params);
-  const std::unique_ptr<Integrator> integrator = info.create(params);
+  const std::unique_ptr<Integrator> integrator = info.create(params, scene);
   const Camera camera(scene, request.settings.width, request.settings.height);
   Renderer renderer(tracer, camera, *integrator, filterFunctions(info.variant), request.settings);
 

@@ -8,6 +8,8 @@
 #include "film/pixel_filter.h"
 #include "render/integrator.h"
 #include "render/integrator_registry.h"
+#include "render/stage_kit.h"
+#include "scene/ray_tracer.h"
 
 #if defined(PATHWAY_VARIANT_REFERENCE)
 #define PATHWAY_THIS_VARIANT ::pathway::Variant::Reference

@@ -65,7 +65,7 @@ const bool registered = [] {
                              PATHWAY_THIS_VARIANT,
                              "filtered supersampling: pixel filters and the splat, eye-light shading",
                              {},
-                             [](const ParamValues&) { return std::make_unique<EyeLightIntegrator>(); }});
+                             [](const ParamValues&, const Scene&) { return std::make_unique<EyeLightIntegrator>(); }});
 }();
 
 }  // namespace
