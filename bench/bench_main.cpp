@@ -1,6 +1,7 @@
 // pathway_bench: the measurements the issues ask for, printed as tables (run by scripts/bench).
 //
 //   pathway_bench rays   [scene] [--width W] [--repeats R]   raw Embree vs the framework, rays/s
+//   pathway_bench stages [scene] [--width W] [--repeats R]   each stage vs raw Embree, same rays
 //   pathway_bench memory SCENE                                resident bytes per triangle, BVH build
 #include <embree3/rtcore.h>
 #include <tbb/parallel_for.h>
@@ -11,6 +12,7 @@
 #include <cstring>
 #include <fstream>
 #include <functional>
+#include <map>
 #include <string>
 #include <unistd.h>
 #include <vector>
@@ -73,6 +75,17 @@ struct RawEmbree {
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene, &context, &rh);
     return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? kInfinity : rh.ray.tfar;
+  }
+  bool occluded(const Ray& ray) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay r;
+    r.org_x = ray.origin.x, r.org_y = ray.origin.y, r.org_z = ray.origin.z;
+    r.dir_x = ray.direction.x, r.dir_y = ray.direction.y, r.dir_z = ray.direction.z;
+    r.tnear = 0.0f, r.tfar = ray.tMax, r.time = 0.0f;
+    r.mask = 0xFFFFFFFFu, r.id = 0, r.flags = 0;
+    rtcOccluded1(scene, &context, &r);
+    return r.tfar < 0.0f;
   }
 };
 
@@ -148,18 +161,23 @@ int benchRays(const std::string& scenePath, int width, int repeats) {
       });
     });
   };
-  // Through the renderer: 1 spp box filter, one pass, so the film work per ray is as small as it
-  // gets; rays/s from the renderer's own counters and clock.
-  auto measureRenderer = [&](const std::string& integrator, uint64_t* raysOut) {
-    RenderRequest request;
-    request.integrator = integrator;
-    request.settings.width = request.settings.height = width;
-    request.settings.samplesPerPixel = 1;
+  // Through the renderer, box filter, 1 spp per pass. The first pass is a warm-up (it also
+  // touches the film's and the tiles' memory for the first time); the rate is that of the
+  // following passes, as in a progressive render or the viewer.
+  auto measureRenderer = [&](const std::string& name, uint64_t* raysOut) {
+    const IntegratorInfo& info = findIntegrator(name);
+    const auto integrator = info.create(ParamValues{}, scene);
+    const Camera camera(scene, width, width);
+    RenderSettings settings;
+    settings.width = settings.height = width;
+    settings.samplesPerPixel = 1 + repeats;
+    Renderer renderer(tracer, camera, *integrator, filterFunctions(info.variant), settings);
+    renderer.renderPass();
     double best = 1e30;
     for (int i = 0; i < repeats; ++i) {
-      const RenderResult result = runRender(scene, tracer, request);
-      best = std::min(best, result.stats.seconds);
-      *raysOut = result.stats.counters.totalRays();
+      const uint64_t before = renderer.stats().counters.totalRays();
+      best = std::min(best, secondsOf([&] { renderer.renderPass(); }));
+      *raysOut = renderer.stats().counters.totalRays() - before;
     }
     return best;
   };
@@ -186,6 +204,113 @@ int benchRays(const std::string& scenePath, int width, int repeats) {
   const double rawMix = (rays.primary.size() + rays.incoherent.size()) / (rawPrimary + rawBounce) * 1e-6;
   row("camera + bounce: raw Embree (same mix)", rawMix, rawMix);
   row("camera + bounce: renderer (bench-bounce)", rate(rendererBounceRays, rendererBounce), rawMix);
+  return 0;
+}
+
+// Steady-state rate of the renderer: one warm-up pass (first touch of the film and tile memory),
+// then the best of `repeats` timed passes, `spp` samples per pixel each.
+double rendererSeconds(const Scene& scene, const RayTracer& tracer, const std::string& name,
+                       const std::map<std::string, std::string>& params, int width, uint32_t spp,
+                       int repeats, uint64_t* raysPerPass) {
+  const IntegratorInfo& info = findIntegrator(name);
+  const auto integrator = info.create(resolveParams(name, info.params, params), scene);
+  const Camera camera(scene, width, width);
+  RenderSettings settings;
+  settings.width = settings.height = width;
+  settings.samplesPerPixel = spp * (1 + repeats);
+  settings.samplesPerPass = spp;
+  settings.sampler = info.defaultSampler;
+  Renderer renderer(tracer, camera, *integrator, filterFunctions(info.variant), settings);
+  renderer.renderPass();
+  double best = 1e30;
+  for (int i = 0; i < repeats; ++i) {
+    const uint64_t before = renderer.stats().counters.totalRays();
+    best = std::min(best, secondsOf([&] { renderer.renderPass(); }));
+    *raysPerPass = renderer.stats().counters.totalRays() - before;
+  }
+  return best;
+}
+
+// Every ray one pass of the stage traces, recorded from a single-threaded render.
+std::vector<LoggedRay> recordRays(const Scene& scene, RayTracer& tracer, const std::string& name,
+                                  const std::map<std::string, std::string>& params, int width,
+                                  uint32_t spp) {
+  std::vector<LoggedRay> log;
+  tracer.setRayLog(&log);
+  RenderRequest request;
+  request.integrator = name;
+  request.params = params;
+  request.settings.width = request.settings.height = width;
+  request.settings.samplesPerPixel = request.settings.samplesPerPass = spp;
+  request.settings.threads = 1;
+  request.settings.sampler = findIntegrator(name).defaultSampler;
+  runRender(scene, tracer, request);
+  tracer.setRayLog(nullptr);
+  return log;
+}
+
+double replaySeconds(const RawEmbree& raw, const std::vector<LoggedRay>& log, int repeats) {
+  std::vector<char> sink(log.size());
+  return bestSeconds(repeats, [&] {
+    tbb::parallel_for(size_t(0), log.size(), [&](size_t i) {
+      const LoggedRay& r = log[i];
+      sink[i] = r.occlusionOnly ? raw.occluded(r.ray) : raw.intersect(r.ray) < kInfinity;
+    });
+  });
+}
+
+int benchStages(const std::string& scenePath, int width, int repeats) {
+  const Scene scene = loadScene(scenePath);
+  RayTracer tracer(scene);
+  const RawEmbree raw(scene);
+  std::printf("scene %s, %dx%d, %d threads; renderer: best of %d passes after a warm-up;\n"
+              "raw: the same pass's rays, recorded, traced by rtcIntersect1/rtcOccluded1\n\n",
+              scenePath.c_str(), width, width, tbb::info::default_concurrency(), repeats);
+  struct Case {
+    const char* name;
+    std::map<std::string, std::string> params;
+    uint32_t spp;
+  };
+  const Case cases[] = {
+      {"stage1@ref", {}, 4},
+      {"stage2@ref", {}, 2},
+      {"stage3@ref", {}, 4},
+      {"stage4@ref", {}, 1},
+      {"stage5@ref", {}, 2},
+      {"stage5@ref", {{"nee", "0"}}, 2},
+  };
+  std::printf("%-22s %14s %12s %12s %8s\n", "integrator", "rays/sample", "Mrays/s", "raw Mrays/s",
+              "ratio");
+  for (const Case& c : cases) {
+    uint64_t rays = 0;
+    const double seconds = rendererSeconds(scene, tracer, c.name, c.params, width, c.spp, repeats,
+                                           &rays);
+    const std::vector<LoggedRay> log = recordRays(scene, tracer, c.name, c.params, width, c.spp);
+    const double rawSeconds = replaySeconds(raw, log, repeats);
+    const double mrays = rays / seconds * 1e-6, rawMrays = log.size() / rawSeconds * 1e-6;
+    std::string label = c.name;
+    for (const auto& [key, value] : c.params) label += " " + key + "=" + value;
+    std::printf("%-22s %14.2f %12.2f %12.2f %8.2f\n", label.c_str(),
+                double(rays) / (double(width) * width * c.spp), mrays, rawMrays, mrays / rawMrays);
+  }
+
+  // The issue's fixed workload: stage 5 at 256x256, 64 spp, 5 bounces, as the CLI runs it.
+  RenderRequest request;
+  request.integrator = "stage5@ref";
+  request.params = {{"max-depth", "5"}};
+  request.settings.width = request.settings.height = 256;
+  request.settings.samplesPerPixel = 64;
+  request.settings.samplesPerPass = 4;
+  double wall = 0.0;
+  RenderResult result;
+  wall = secondsOf([&] { result = runRender(scene, tracer, request); });
+  std::printf("\nstage5@ref 256x256, 64 spp, max-depth 5: %.2f s wall, %.2f Mrays/s "
+              "(%llu rays: %llu primary, %llu secondary, %llu shadow)\n",
+              wall, result.stats.counters.totalRays() / wall * 1e-6,
+              static_cast<unsigned long long>(result.stats.counters.totalRays()),
+              static_cast<unsigned long long>(result.stats.counters.primary),
+              static_cast<unsigned long long>(result.stats.counters.secondary),
+              static_cast<unsigned long long>(result.stats.counters.shadow));
   return 0;
 }
 
@@ -232,7 +357,9 @@ int main(int argc, char** argv) {
     }
     if (mode == "rays") return pathway::benchRays(scene, width, repeats);
     if (mode == "memory") return pathway::benchMemory(scene);
+    if (mode == "stages") return pathway::benchStages(scene, width, repeats);
     std::fprintf(stderr, "usage: pathway_bench rays [scene] [--width W] [--repeats R]\n"
+                         "       pathway_bench stages [scene] [--width W] [--repeats R]\n"
                          "       pathway_bench memory SCENE\n");
     return 2;
   } catch (const std::exception& error) {

@@ -15,28 +15,6 @@ bool isResolved(const PixelSums& p) {
 
 }  // namespace
 
-void PixelSums::add(double w, const glm::dvec3& radiance) {
-  if (w == 0.0) return;
-  weightedRadiance += w * radiance;
-  weight += w;
-  absWeight += std::fabs(w);
-  squaredWeightRadiance += (w * w) * radiance;
-  squaredWeightRadiance2 += (w * w) * radiance * radiance;
-  squaredWeight += w * w;
-  ++sampleCount;
-}
-
-PixelSums& PixelSums::operator+=(const PixelSums& o) {
-  weightedRadiance += o.weightedRadiance;
-  weight += o.weight;
-  absWeight += o.absWeight;
-  squaredWeightRadiance += o.squaredWeightRadiance;
-  squaredWeightRadiance2 += o.squaredWeightRadiance2;
-  squaredWeight += o.squaredWeight;
-  sampleCount += o.sampleCount;
-  return *this;
-}
-
 FilmBlock::FilmBlock(int imageWidth, int imageHeight, int x0, int y0, int width, int height)
     : imageWidth_(imageWidth), imageHeight_(imageHeight) {
   x0_ = std::max(0, x0);

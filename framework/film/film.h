@@ -11,17 +11,40 @@
 
 namespace pathway {
 
+// Per-pixel sums, in double: with a negative-lobed filter Σ w·L and Σ w can nearly cancel, and
+// the constant-scene guarantee (Σ w·C / Σ w = C) needs the products w·L summed without rounding.
 struct PixelSums {
-  glm::dvec3 weightedRadiance{0.0};         // Σ w·L
-  double weight = 0.0;                      // Σ w
-  double absWeight = 0.0;                   // Σ |w|, to tell "Σw ≈ 0" from "no samples"
-  glm::dvec3 squaredWeightRadiance{0.0};    // Σ w²·L
-  glm::dvec3 squaredWeightRadiance2{0.0};   // Σ w²·L²
-  double squaredWeight = 0.0;               // Σ w²
-  uint32_t sampleCount = 0;                 // splats with w != 0
+  using Real = double;
+  using Vec = glm::dvec3;
+  Vec weightedRadiance{0};          // Σ w·L
+  Real weight = 0;                  // Σ w
+  Real absWeight = 0;               // Σ |w|, to tell "Σw ≈ 0" from "no samples"
+  Vec squaredWeightRadiance{0};     // Σ w²·L
+  Vec squaredWeightRadiance2{0};    // Σ w²·L²
+  Real squaredWeight = 0;           // Σ w²
+  uint32_t sampleCount = 0;         // splats with w != 0
 
-  void add(double w, const glm::dvec3& radiance);
-  PixelSums& operator+=(const PixelSums& other);
+  void add(Real w, const Vec& radiance) {
+    if (w == 0) return;
+    const Real w2 = w * w;
+    weightedRadiance += w * radiance;
+    weight += w;
+    absWeight += w < 0 ? -w : w;
+    squaredWeightRadiance += w2 * radiance;
+    squaredWeightRadiance2 += w2 * radiance * radiance;
+    squaredWeight += w2;
+    ++sampleCount;
+  }
+  PixelSums& operator+=(const PixelSums& o) {
+    weightedRadiance += o.weightedRadiance;
+    weight += o.weight;
+    absWeight += o.absWeight;
+    squaredWeightRadiance += o.squaredWeightRadiance;
+    squaredWeightRadiance2 += o.squaredWeightRadiance2;
+    squaredWeight += o.squaredWeight;
+    sampleCount += o.sampleCount;
+    return *this;
+  }
 };
 
 // A rectangle of pixel sums in image coordinates. Splats outside the image are ignored.

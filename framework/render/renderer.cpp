@@ -48,7 +48,8 @@ Renderer::Renderer(const RayTracer& tracer, const Camera& camera, const Integrat
       sampler_(settings.sampler, settings.samplesPerPixel, settings.seed),
       film_(settings.width, settings.height) {
   // A sample drawn in pixel i reaches pixels whose centres lie within the filter radius.
-  const int margin = static_cast<int>(std::ceil(filter_.radius())) + 1;
+  // Pixel j's centre j + 0.5 is within r of a sample in [i, i+1) only if |j - i| <= ceil(r + 0.5).
+  const int margin = static_cast<int>(std::ceil(filter_.radius() + 0.5f));
   const int size = settings_.tileSize;
   // Same-class tiles are two tiles apart; they cannot overlap if the margin is under a tile.
   if (2 * margin >= size)

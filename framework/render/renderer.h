@@ -30,7 +30,7 @@ struct RenderSettings {
   int threads = 0;  // 0: all cores
   FilterType filter = FilterType::Box;
   float filterRadius = 0.0f;  // 0: the filter's natural radius
-  int tileSize = 16;
+  int tileSize = 32;
 };
 
 struct RenderStats {

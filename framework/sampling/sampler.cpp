@@ -22,9 +22,13 @@ constexpr uint64_t kStrataShuffleSalt = 0x535452415441;  // "STRATA"
 
 // 32 random bits for (pixel, index, dimension). Both dimensions of a pair come from one PCG32
 // stream, seeded by a hash of the pair, so any dimension costs O(1): no stepping past the others.
-uint32_t independentBits(uint32_t px, uint32_t py, uint32_t index, uint32_t dimension,
-                         uint64_t seed) {
-  Pcg32 rng(hashValues(px, py, index, dimension / 2, seed));
+// pixelKey is already a hash, so folding in the index and the pair is enough.
+Pcg32 pairGenerator(uint64_t pixelKey, uint32_t index, uint32_t dimension) {
+  return Pcg32(hashCombine(hashCombine(pixelKey, index), dimension / 2));
+}
+
+uint32_t independentBits(uint64_t pixelKey, uint32_t index, uint32_t dimension) {
+  Pcg32 rng = pairGenerator(pixelKey, index, dimension);
   if (dimension % 2 == 1) rng.nextUInt();
   return rng.nextUInt();
 }
@@ -106,19 +110,36 @@ Sampler::Sampler(SamplerType type, uint32_t samplesPerPixel, uint64_t seed)
   strataY_ = (n + x - 1) / x;
 }
 
+uint64_t Sampler::pixelKey(uint32_t px, uint32_t py) const { return hashValues(px, py, seed_); }
+
 float Sampler::get(uint32_t px, uint32_t py, uint32_t index, uint32_t dimension) const {
+  return get(pixelKey(px, py), index, dimension);
+}
+
+Vec2 Sampler::get2D(uint64_t pixelKey, uint32_t index, uint32_t dimension) const {
+  // The same values as get(dimension) and get(dimension + 1), with the shared work done once:
+  // for the independent sampler both come from one seeded generator.
+  if (type_ == SamplerType::Independent) {
+    Pcg32 rng = pairGenerator(pixelKey, index, dimension);
+    const float u = toUnitFloat(rng.nextUInt());
+    return Vec2(u, toUnitFloat(rng.nextUInt()));
+  }
+  return Vec2(get(pixelKey, index, dimension), get(pixelKey, index, dimension + 1));
+}
+
+float Sampler::get(uint64_t pixelKey, uint32_t index, uint32_t dimension) const {
   switch (type_) {
     case SamplerType::Independent:
-      return toUnitFloat(independentBits(px, py, index, dimension, seed_));
+      return toUnitFloat(independentBits(pixelKey, index, dimension));
 
     case SamplerType::Stratified: {
       // Dimensions (2k, 2k+1) share a jittered strataX x strataY grid. Sample `index` gets cell
       // permute(index): a different shuffle per pixel and per pair, so pairs are not correlated.
       const uint64_t cells = uint64_t(strataX_) * strataY_;
-      const uint32_t randomBits = independentBits(px, py, index, dimension, seed_);
+      const uint32_t randomBits = independentBits(pixelKey, index, dimension);
       if (index >= cells) return toUnitFloat(randomBits);  // past the plan: plain random
       const auto pattern =
-          static_cast<uint32_t>(hashValues(px, py, dimension / 2, seed_, kStrataShuffleSalt));
+          static_cast<uint32_t>(hashValues(pixelKey, dimension / 2, kStrataShuffleSalt));
       const uint32_t cell = permute(index, static_cast<uint32_t>(cells), pattern);
       if (dimension % 2 == 0) return jitterInStratum(cell % strataX_, strataX_, randomBits);
       return jitterInStratum(cell / strataX_, strataY_, randomBits);
@@ -129,15 +150,14 @@ float Sampler::get(uint32_t px, uint32_t py, uint32_t index, uint32_t dimension)
       // four. A block's dimensions come from ONE 4D Sobol' point (so, e.g., pixel position 0-1
       // and AO direction 2-3 are stratified jointly), and each block shuffles the sample order
       // on its own, which decorrelates blocks. Each pixel has its own scrambles.
-      const uint64_t pixelSeed = hashValues(px, py, seed_);
       const auto shuffleSeed =
-          static_cast<uint32_t>(hashValues(pixelSeed, dimension / 4, kIndexShuffleSalt));
+          static_cast<uint32_t>(hashValues(pixelKey, dimension / 4, kIndexShuffleSalt));
       // Owen-scrambling the index maps every aligned block of 2^m indices onto another one, so
       // the first 2^m samples of a pixel are still a whole block of the sequence: a net.
       const uint32_t shuffledIndex = nestedUniformScramble(index, shuffleSeed);
       const uint32_t x = sobolSample(shuffledIndex, dimension % 4);
       const auto scrambleSeed =
-          static_cast<uint32_t>(hashValues(pixelSeed, dimension, kValueScrambleSalt));
+          static_cast<uint32_t>(hashValues(pixelKey, dimension, kValueScrambleSalt));
       return toUnitFloat(nestedUniformScramble(x, scrambleSeed));
     }
   }

@@ -32,6 +32,12 @@ class Sampler {
 
   // The sample value in [0, 1) of `dimension` for sample `index` of `pixel`.
   float get(uint32_t pixelX, uint32_t pixelY, uint32_t index, uint32_t dimension) const;
+  // The same, with the pixel's hash (pixelKey) computed once by the caller: the fast path.
+  float get(uint64_t pixelKey, uint32_t index, uint32_t dimension) const;
+  // Dimensions `dimension` (even) and `dimension + 1` together: the same values, faster.
+  Vec2 get2D(uint64_t pixelKey, uint32_t index, uint32_t dimension) const;
+  // A hash of (pixel, seed): every sampler's randomisation starts from it.
+  uint64_t pixelKey(uint32_t pixelX, uint32_t pixelY) const;
 
   SamplerType type() const { return type_; }
   uint32_t samplesPerPixel() const { return samplesPerPixel_; }
@@ -48,21 +54,22 @@ class Sampler {
 class SampleStream {
  public:
   SampleStream(const Sampler& sampler, uint32_t pixelX, uint32_t pixelY, uint32_t index)
-      : sampler_(&sampler), pixelX_(pixelX), pixelY_(pixelY), index_(index) {}
+      : sampler_(&sampler), pixelKey_(sampler.pixelKey(pixelX, pixelY)), index_(index) {}
 
-  float next1D() { return sampler_->get(pixelX_, pixelY_, index_, dimension_++); }
+  float next1D() { return sampler_->get(pixelKey_, index_, dimension_++); }
   Vec2 next2D() {
     // Pairs start on even dimensions, so a pair is always one stratified/Sobol' 2D projection.
     if (dimension_ % 2 == 1) ++dimension_;
-    const float u = next1D();
-    const float v = next1D();
-    return Vec2(u, v);
+    const Vec2 u = sampler_->get2D(pixelKey_, index_, dimension_);
+    dimension_ += 2;
+    return u;
   }
   uint32_t dimension() const { return dimension_; }
 
  private:
   const Sampler* sampler_;
-  uint32_t pixelX_, pixelY_, index_;
+  uint64_t pixelKey_;
+  uint32_t index_;
   uint32_t dimension_ = 0;
 };
 

@@ -95,6 +95,7 @@ RayTracer::~RayTracer() {
 std::optional<SurfaceHit> RayTracer::intersect(const Ray& ray, RayKind kind,
                                                RayCounters& counters) const {
   counters.count(kind);
+  if (log_) log_->push_back({ray, false});
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rayHit;
@@ -110,7 +111,11 @@ std::optional<SurfaceHit> RayTracer::intersect(const Ray& ray, RayKind kind,
   hit.distance = rayHit.ray.tfar;
   const Mesh& mesh = scene_.meshes[hit.mesh];
   const glm::uvec3 tri = mesh.triangles[hit.triangle];
-  const Vec3 p0 = mesh.positions[tri.x], p1 = mesh.positions[tri.y], p2 = mesh.positions[tri.z];
+  // Component-wise loads: copying whole 12-byte vectors made GCC bounce them through the stack
+  // with mismatched store/load sizes, which stalled every hit (measured with perf).
+  const float* xyz = &mesh.positions.data()->x;
+  auto vertex = [xyz](uint32_t i) { return Vec3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]); };
+  const Vec3 p0 = vertex(tri.x), p1 = vertex(tri.y), p2 = vertex(tri.z);
   const float u = rayHit.hit.u, v = rayHit.hit.v, w = 1.0f - u - v;
   // The point from barycentrics lies on the triangle to float precision, unlike origin + t*dir,
   // whose error grows with the distance travelled.
@@ -137,6 +142,7 @@ std::optional<SurfaceHit> RayTracer::intersect(const Ray& ray, RayKind kind,
 
 bool RayTracer::occluded(const Ray& ray, RayKind kind, RayCounters& counters) const {
   counters.count(kind);
+  if (log_) log_->push_back({ray, true});
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRay r = toEmbree(ray);

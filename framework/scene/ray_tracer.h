@@ -5,6 +5,7 @@
 #include <embree3/rtcore.h>
 
 #include <optional>
+#include <vector>
 
 #include "core/math.h"
 #include "core/ray_counters.h"
@@ -22,6 +23,12 @@ struct SurfaceHit {
   Color emitted{0.0f};    // radiance emitted back along the ray (zero on a one-sided back face)
   uint32_t mesh = 0;
   uint32_t triangle = 0;
+};
+
+// One traced ray, as recorded for benchmarks that replay a render's exact ray mix.
+struct LoggedRay {
+  Ray ray;
+  bool occlusionOnly;  // occluded() rather than intersect()
 };
 
 class RayTracer {
@@ -43,6 +50,10 @@ class RayTracer {
   // both ends are moved off their surfaces so neither surface can block it.
   static Ray spawnRayTo(const SurfaceHit& from, const Vec3& target, const Vec3& targetNormal);
 
+  // Records every query into `log` (nullptr: stop). Single-threaded renders only: the log is
+  // not synchronised. Benchmarks use it to trace the same rays through raw Embree.
+  void setRayLog(std::vector<LoggedRay>* log) { log_ = log; }
+
   const Scene& scene() const { return scene_; }
   size_t bvhBytes() const { return bvhBytes_; }  // memory Embree allocated for the BVH
 
@@ -51,6 +62,7 @@ class RayTracer {
   RTCDevice device_ = nullptr;
   RTCScene rtcScene_ = nullptr;
   size_t bvhBytes_ = 0;
+  std::vector<LoggedRay>* log_ = nullptr;
 };
 
 }  // namespace pathway
