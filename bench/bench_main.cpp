@@ -2,9 +2,11 @@
 //
 //   pathway_bench rays   [scene] [--width W] [--repeats R]   raw Embree vs the framework, rays/s
 //   pathway_bench stages [scene] [--width W] [--repeats R]   each stage vs raw Embree, same rays
-//   pathway_bench memory SCENE                                resident bytes per triangle, BVH build
+//   pathway_bench memory SCENE                                resident bytes per triangle, BVH
+//   build
 #include <embree3/rtcore.h>
 #include <tbb/parallel_for.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -14,7 +16,6 @@
 #include <functional>
 #include <map>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include "core/error.h"
@@ -130,7 +131,11 @@ class DiffuseBounceIntegrator : public Integrator {
   }
 };
 const bool registered = registerIntegrator(
-    {"bench-bounce", 0, Variant::Reference, "benchmark: camera ray + one diffuse bounce", {},
+    {"bench-bounce",
+     0,
+     Variant::Reference,
+     "benchmark: camera ray + one diffuse bounce",
+     {},
      [](const ParamValues&, const Scene&) { return std::make_unique<DiffuseBounceIntegrator>(); }});
 
 int benchRays(const std::string& scenePath, int width, int repeats) {
@@ -196,12 +201,14 @@ int benchRays(const std::string& scenePath, int width, int repeats) {
   const double rawB = rate(rays.incoherent.size(), rawBounce);
   row("primary: raw Embree rtcIntersect1", rawP, rawP);
   row("primary: RayTracer::intersect", rate(rays.primary.size(), apiPrimary), rawP);
-  row("primary: renderer (stage1@ref, box, 1 spp)", rate(rendererPrimaryRays, rendererPrimary), rawP);
+  row("primary: renderer (stage1@ref, box, 1 spp)", rate(rendererPrimaryRays, rendererPrimary),
+      rawP);
   row("diffuse bounce: raw Embree rtcIntersect1", rawB, rawB);
   row("diffuse bounce: RayTracer::intersect", rate(rays.incoherent.size(), apiBounce), rawB);
   // The renderer's bounce path mixes one primary and one bounce ray per sample; compare it with
   // raw Embree tracing the same mix.
-  const double rawMix = (rays.primary.size() + rays.incoherent.size()) / (rawPrimary + rawBounce) * 1e-6;
+  const double rawMix =
+      (rays.primary.size() + rays.incoherent.size()) / (rawPrimary + rawBounce) * 1e-6;
   row("camera + bounce: raw Embree (same mix)", rawMix, rawMix);
   row("camera + bounce: renderer (bench-bounce)", rate(rendererBounceRays, rendererBounce), rawMix);
   return 0;
@@ -263,28 +270,25 @@ int benchStages(const std::string& scenePath, int width, int repeats) {
   const Scene scene = loadScene(scenePath);
   RayTracer tracer(scene);
   const RawEmbree raw(scene);
-  std::printf("scene %s, %dx%d, %d threads; renderer: best of %d passes after a warm-up;\n"
-              "raw: the same pass's rays, recorded, traced by rtcIntersect1/rtcOccluded1\n\n",
-              scenePath.c_str(), width, width, tbb::info::default_concurrency(), repeats);
+  std::printf(
+      "scene %s, %dx%d, %d threads; renderer: best of %d passes after a warm-up;\n"
+      "raw: the same pass's rays, recorded, traced by rtcIntersect1/rtcOccluded1\n\n",
+      scenePath.c_str(), width, width, tbb::info::default_concurrency(), repeats);
   struct Case {
     const char* name;
     std::map<std::string, std::string> params;
     uint32_t spp;
   };
   const Case cases[] = {
-      {"stage1@ref", {}, 4},
-      {"stage2@ref", {}, 2},
-      {"stage3@ref", {}, 4},
-      {"stage4@ref", {}, 1},
-      {"stage5@ref", {}, 2},
-      {"stage5@ref", {{"nee", "0"}}, 2},
+      {"stage1@ref", {}, 4}, {"stage2@ref", {}, 2}, {"stage3@ref", {}, 4},
+      {"stage4@ref", {}, 1}, {"stage5@ref", {}, 2}, {"stage5@ref", {{"nee", "0"}}, 2},
   };
   std::printf("%-22s %14s %12s %12s %8s\n", "integrator", "rays/sample", "Mrays/s", "raw Mrays/s",
               "ratio");
   for (const Case& c : cases) {
     uint64_t rays = 0;
-    const double seconds = rendererSeconds(scene, tracer, c.name, c.params, width, c.spp, repeats,
-                                           &rays);
+    const double seconds =
+        rendererSeconds(scene, tracer, c.name, c.params, width, c.spp, repeats, &rays);
     const std::vector<LoggedRay> log = recordRays(scene, tracer, c.name, c.params, width, c.spp);
     const double rawSeconds = replaySeconds(raw, log, repeats);
     const double mrays = rays / seconds * 1e-6, rawMrays = log.size() / rawSeconds * 1e-6;
@@ -304,13 +308,14 @@ int benchStages(const std::string& scenePath, int width, int repeats) {
   double wall = 0.0;
   RenderResult result;
   wall = secondsOf([&] { result = runRender(scene, tracer, request); });
-  std::printf("\nstage5@ref 256x256, 64 spp, max-depth 5: %.2f s wall, %.2f Mrays/s "
-              "(%llu rays: %llu primary, %llu secondary, %llu shadow)\n",
-              wall, result.stats.counters.totalRays() / wall * 1e-6,
-              static_cast<unsigned long long>(result.stats.counters.totalRays()),
-              static_cast<unsigned long long>(result.stats.counters.primary),
-              static_cast<unsigned long long>(result.stats.counters.secondary),
-              static_cast<unsigned long long>(result.stats.counters.shadow));
+  std::printf(
+      "\nstage5@ref 256x256, 64 spp, max-depth 5: %.2f s wall, %.2f Mrays/s "
+      "(%llu rays: %llu primary, %llu secondary, %llu shadow)\n",
+      wall, result.stats.counters.totalRays() / wall * 1e-6,
+      static_cast<unsigned long long>(result.stats.counters.totalRays()),
+      static_cast<unsigned long long>(result.stats.counters.primary),
+      static_cast<unsigned long long>(result.stats.counters.secondary),
+      static_cast<unsigned long long>(result.stats.counters.shadow));
   return 0;
 }
 
@@ -337,7 +342,8 @@ int benchMemory(const std::string& scenePath) {
   std::printf("resident bytes per triangle: scene %.1f, BVH %.1f, total %.1f\n",
               (afterLoad - before) / triangles, (afterBuild - afterLoad) / triangles,
               (afterBuild - before) / triangles);
-  std::printf("Embree's own count of BVH bytes per triangle: %.1f\n", tracer->bvhBytes() / triangles);
+  std::printf("Embree's own count of BVH bytes per triangle: %.1f\n",
+              tracer->bvhBytes() / triangles);
   return 0;
 }
 
@@ -351,16 +357,20 @@ int main(int argc, char** argv) {
     int width = 512, repeats = 5;
     for (int i = 2; i < argc; ++i) {
       const std::string arg = argv[i];
-      if (arg == "--width" && i + 1 < argc) width = std::stoi(argv[++i]);
-      else if (arg == "--repeats" && i + 1 < argc) repeats = std::stoi(argv[++i]);
-      else scene = arg;
+      if (arg == "--width" && i + 1 < argc)
+        width = std::stoi(argv[++i]);
+      else if (arg == "--repeats" && i + 1 < argc)
+        repeats = std::stoi(argv[++i]);
+      else
+        scene = arg;
     }
     if (mode == "rays") return pathway::benchRays(scene, width, repeats);
     if (mode == "memory") return pathway::benchMemory(scene);
     if (mode == "stages") return pathway::benchStages(scene, width, repeats);
-    std::fprintf(stderr, "usage: pathway_bench rays [scene] [--width W] [--repeats R]\n"
-                         "       pathway_bench stages [scene] [--width W] [--repeats R]\n"
-                         "       pathway_bench memory SCENE\n");
+    std::fprintf(stderr,
+                 "usage: pathway_bench rays [scene] [--width W] [--repeats R]\n"
+                 "       pathway_bench stages [scene] [--width W] [--repeats R]\n"
+                 "       pathway_bench memory SCENE\n");
     return 2;
   } catch (const std::exception& error) {
     std::fprintf(stderr, "pathway_bench: error: %s\n", error.what());

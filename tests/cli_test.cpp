@@ -35,7 +35,8 @@ class Cli : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("pathway_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+           ("pathway_cli_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }

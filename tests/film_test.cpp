@@ -1,10 +1,11 @@
 // The film and stage 1's splat: analytic weights, and numerical normalisation that makes a constant
 // scene come back exactly constant for every filter, also where Σw is close to zero.
+#include "film/film.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "film/film.h"
 #include "film/pixel_filter.h"
 #include "reference_variant.h"
 #include "render/render_job.h"
@@ -16,8 +17,8 @@ namespace {
 TEST(Film, SplatAddsTheFilterWeightToEveryPixelInReach) {
   PATHWAY_REQUIRE_SOLUTIONS();
   const FilterFunctions& reference = filterFunctions(Variant::Reference);
-  for (FilterType type : {FilterType::Box, FilterType::Tent, FilterType::MitchellNetravali,
-                          FilterType::Gaussian}) {
+  for (FilterType type :
+       {FilterType::Box, FilterType::Tent, FilterType::MitchellNetravali, FilterType::Gaussian}) {
     const PixelFilter filter(type, naturalFilterRadius(type), reference);
     FilmBlock block(16, 16, 0, 0, 16, 16);
     const Vec2 p(7.3f, 8.9f);
@@ -59,8 +60,8 @@ TEST(Film, ConstantSceneComesBackExactlyForEveryFilterAndSampleCount) {
   const Color constant(0.3f, 0.7f, 1.9f);
   const Scene scene = test::constantScene(constant);
   const RayTracer tracer(scene);
-  for (FilterType type : {FilterType::Box, FilterType::Tent, FilterType::MitchellNetravali,
-                          FilterType::Gaussian}) {
+  for (FilterType type :
+       {FilterType::Box, FilterType::Tent, FilterType::MitchellNetravali, FilterType::Gaussian}) {
     for (uint32_t spp : {1u, 2u, 4u}) {
       RenderRequest request;
       request.integrator = "stage1@ref";

@@ -1,10 +1,11 @@
 // Stage 1's filter profiles against their formulas, and the PixelFilter that scales them.
+#include "film/pixel_filter.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "core/error.h"
-#include "film/pixel_filter.h"
 #include "reference_variant.h"
 
 namespace pathway {
@@ -19,7 +20,9 @@ double integrate(const PixelFilter& filter) {
   return sum * h;
 }
 
-const FilterFunctions& reference() { return filterFunctions(Variant::Reference); }
+const FilterFunctions& reference() {
+  return filterFunctions(Variant::Reference);
+}
 
 TEST(PixelFilter, ProfilesIntegrateToTheirAnalyticValues) {
   PATHWAY_REQUIRE_SOLUTIONS();
@@ -40,7 +43,7 @@ TEST(PixelFilter, ProfilesMatchTheirFormulasPointwise) {
     const float a = std::fabs(x);
     EXPECT_FLOAT_EQ(f.box(x), a <= 0.5f ? 1.0f : 0.0f) << x;
     EXPECT_NEAR(f.tent(x), std::fmax(0.0f, 1.0f - a), 1e-6) << x;
-    const float mn = a < 1 ? (7 * a * a * a - 12 * a * a + 16.0f / 3) / 6
+    const float mn = a < 1    ? (7 * a * a * a - 12 * a * a + 16.0f / 3) / 6
                      : a <= 2 ? (-7.0f / 3 * a * a * a + 12 * a * a - 20 * a + 32.0f / 3) / 6
                               : 0.0f;
     EXPECT_NEAR(f.mitchellNetravali(x), mn, 1e-6) << x;
@@ -61,8 +64,8 @@ TEST(PixelFilter, MitchellNetravaliHasItsNegativeLobeMinimumAt10Over7) {
 
 TEST(PixelFilter, SupportEndsAtTheRadiusAndScalesWithIt) {
   PATHWAY_REQUIRE_SOLUTIONS();
-  for (FilterType type : {FilterType::Box, FilterType::Tent, FilterType::MitchellNetravali,
-                          FilterType::Gaussian}) {
+  for (FilterType type :
+       {FilterType::Box, FilterType::Tent, FilterType::MitchellNetravali, FilterType::Gaussian}) {
     for (float radius : {0.5f, 1.0f, 2.5f}) {
       const PixelFilter filter(type, radius, reference());
       EXPECT_EQ(filter.evaluate1D(radius * 1.001f), 0.0f) << filterTypeName(type);

@@ -1,11 +1,12 @@
 // Ray queries: counters, front/back faces, and no self-intersection at any scale or offset.
+#include "scene/ray_tracer.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "sampling/pcg32.h"
 #include "scene/camera.h"
-#include "scene/ray_tracer.h"
 #include "test_scenes.h"
 
 namespace pathway {
@@ -62,7 +63,8 @@ TEST(RayTracer, ReportsFaceSideNormalAlbedoAndOneSidedEmission) {
   const RayTracer tracer(scene);
   RayCounters counters;
 
-  const auto front = tracer.intersect({Vec3(0.2f, 2, 0.1f), Vec3(0, -1, 0)}, RayKind::Primary, counters);
+  const auto front =
+      tracer.intersect({Vec3(0.2f, 2, 0.1f), Vec3(0, -1, 0)}, RayKind::Primary, counters);
   ASSERT_TRUE(front);
   EXPECT_TRUE(front->frontFace);
   EXPECT_NEAR(front->distance, 2.0f, 1e-6);
@@ -71,7 +73,8 @@ TEST(RayTracer, ReportsFaceSideNormalAlbedoAndOneSidedEmission) {
   EXPECT_EQ(front->albedo, light.baseColor);
   EXPECT_EQ(front->emitted, Color(3.0f));
 
-  const auto back = tracer.intersect({Vec3(0.2f, -2, 0.1f), Vec3(0, 1, 0)}, RayKind::Primary, counters);
+  const auto back =
+      tracer.intersect({Vec3(0.2f, -2, 0.1f), Vec3(0, 1, 0)}, RayKind::Primary, counters);
   ASSERT_TRUE(back);
   EXPECT_FALSE(back->frontFace);
   EXPECT_NEAR(glm::distance(back->normal, Vec3(0, -1, 0)), 0.0f, 1e-6);  // faces the ray
@@ -84,7 +87,8 @@ TEST(RayTracer, ReportsFaceSideNormalAlbedoAndOneSidedEmission) {
   EXPECT_EQ(backDouble->emitted, Color(3.0f));
 
   // Segments: tMax stops short of the quad; an occlusion query agrees with intersect.
-  EXPECT_FALSE(tracer.intersect({Vec3(0, 2, 0), Vec3(0, -1, 0), 1.9f}, RayKind::Secondary, counters));
+  EXPECT_FALSE(
+      tracer.intersect({Vec3(0, 2, 0), Vec3(0, -1, 0), 1.9f}, RayKind::Secondary, counters));
   EXPECT_FALSE(tracer.occluded({Vec3(0, 2, 0), Vec3(0, -1, 0), 1.9f}, RayKind::Shadow, counters));
   EXPECT_TRUE(tracer.occluded({Vec3(0, 2, 0), Vec3(0, -1, 0), 2.1f}, RayKind::Shadow, counters));
 }
@@ -92,8 +96,8 @@ TEST(RayTracer, ReportsFaceSideNormalAlbedoAndOneSidedEmission) {
 TEST(RayTracer, ShadowRayToALightPointIsNotBlockedByEitherEnd) {
   Scene scene;
   scene.materials = {Material{}};
-  test::addQuad(scene, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, -1}, 0);    // floor, up
-  test::addQuad(scene, {-1, 1, -1}, {1, 1, -1}, {1, 1, 1}, {-1, 1, 1}, 0);    // ceiling, down
+  test::addQuad(scene, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, -1}, 0);  // floor, up
+  test::addQuad(scene, {-1, 1, -1}, {1, 1, -1}, {1, 1, 1}, {-1, 1, 1}, 0);  // ceiling, down
   test::finishScene(scene);
   const RayTracer tracer(scene);
   RayCounters counters;

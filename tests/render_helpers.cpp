@@ -42,7 +42,8 @@ Estimate meanOverPixels(const RenderResult& result, int channel,
 }
 
 bool agree(const Estimate& a, const Estimate& b, double allowance) {
-  const double se = std::sqrt(a.standardError * a.standardError + b.standardError * b.standardError);
+  const double se =
+      std::sqrt(a.standardError * a.standardError + b.standardError * b.standardError);
   return std::fabs(a.mean - b.mean) <= kZBound * se + allowance;
 }
 

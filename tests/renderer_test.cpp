@@ -28,7 +28,8 @@ TEST(Renderer, SameSeedGivesBitIdenticalImagesForOneAndManyThreads) {
   PATHWAY_REQUIRE_SOLUTIONS();
   const Scene scene = test::boxRoom();
   const RayTracer tracer(scene);
-  for (SamplerType sampler : {SamplerType::Independent, SamplerType::Stratified, SamplerType::Sobol}) {
+  for (SamplerType sampler :
+       {SamplerType::Independent, SamplerType::Stratified, SamplerType::Sobol}) {
     const RenderResult one = runRender(scene, tracer, smallRequest(1, sampler));
     for (int threads : {2, 3, 8}) {
       const RenderResult many = runRender(scene, tracer, smallRequest(threads, sampler));
@@ -36,9 +37,9 @@ TEST(Renderer, SameSeedGivesBitIdenticalImagesForOneAndManyThreads) {
       EXPECT_EQ(0, std::memcmp(one.images.color.pixels.data(), many.images.color.pixels.data(),
                                one.images.color.pixels.size() * sizeof(Color)))
           << samplerTypeName(sampler) << " with " << threads << " threads";
-      EXPECT_EQ(0, std::memcmp(one.images.variance.pixels.data(),
-                               many.images.variance.pixels.data(),
-                               one.images.variance.pixels.size() * sizeof(Color)));
+      EXPECT_EQ(0,
+                std::memcmp(one.images.variance.pixels.data(), many.images.variance.pixels.data(),
+                            one.images.variance.pixels.size() * sizeof(Color)));
     }
     // A different seed must change the image (otherwise the test above proves nothing).
     RenderRequest other = smallRequest(1, sampler);

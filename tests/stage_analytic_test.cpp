@@ -21,7 +21,9 @@ using test::meanOverPixels;
 using test::render;
 using test::RenderSpec;
 
-Scene sceneFile(const std::string& name) { return loadScene(std::string(PATHWAY_SCENES_DIR) + "/" + name); }
+Scene sceneFile(const std::string& name) {
+  return loadScene(std::string(PATHWAY_SCENES_DIR) + "/" + name);
+}
 
 std::string describe(const Estimate& e) {
   return "mean " + std::to_string(e.mean) + " ± " + std::to_string(e.standardError) + " over " +
@@ -42,7 +44,8 @@ TEST(StageAO, OpenPlaneIsExactlyOneAtEveryScaleAndOffset) {
         // One blocked AO ray would lower a pixel by at least 1/(8·4); cos θ / (π·pdf) itself
         // rounds to 1 within a few float ulps, hence the 1e-5.
         for (const Color& pixel : result.images.color.pixels)
-          ASSERT_NEAR(pixel.x, 1.0f, 1e-5) << integrator << " scale " << scale << " offset " << offset;
+          ASSERT_NEAR(pixel.x, 1.0f, 1e-5)
+              << integrator << " scale " << scale << " offset " << offset;
       }
     }
   }
@@ -55,7 +58,8 @@ TEST(StageAO, FloorUnderACeilingIsHOverRSquared) {
     for (const char* integrator : {"stage2@ref", "stage3@ref"}) {
       RenderSpec spec{integrator, {{"ao-distance", std::to_string(r)}}, 24, 24, 64};
       const Estimate ao = meanOverPixels(render(scene, spec));
-      EXPECT_TRUE(agree(ao, (1.0 / r) * (1.0 / r))) << integrator << " r " << r << ": " << describe(ao);
+      EXPECT_TRUE(agree(ao, (1.0 / r) * (1.0 / r)))
+          << integrator << " r " << r << ": " << describe(ao);
       // Uniform instead of cosine weighting would give h/r: far outside the bound.
       EXPECT_FALSE(agree(ao, 1.0 / r)) << integrator;
     }
@@ -75,8 +79,8 @@ TEST(StageAO, FloorBesideAWallIsOneHalfAndInACornerOneQuarter) {
     for (const char* integrator : {"stage2@ref", "stage3@ref"}) {
       const Estimate ao =
           meanOverPixels(render(scene, {integrator, {{"ao-distance", "1e6"}}, 24, 24, 64}));
-      EXPECT_TRUE(agree(ao, c.expected, c.allowance)) << c.file << " " << integrator << ": "
-                                                      << describe(ao);
+      EXPECT_TRUE(agree(ao, c.expected, c.allowance))
+          << c.file << " " << integrator << ": " << describe(ao);
     }
   }
 }
@@ -85,20 +89,22 @@ TEST(StageAO, NestedAnd4DAgreeInMean) {
   PATHWAY_REQUIRE_SOLUTIONS();
   const Scene scene = sceneFile("cornell_box.gltf");
   // Equal rays per pixel: nested 16 eye samples x (1 + 3 AO rays) = 64; 4D 32 samples x 2 = 64.
-  const Estimate nested = meanOverPixels(render(
-      scene, {"stage2@ref", {{"ao-rays", "3"}, {"ao-distance", "0.2"}}, 32, 32, 16}));
+  const Estimate nested = meanOverPixels(
+      render(scene, {"stage2@ref", {{"ao-rays", "3"}, {"ao-distance", "0.2"}}, 32, 32, 16}));
   const Estimate fourD = meanOverPixels(render(
       scene, {"stage3@ref", {{"ao-distance", "0.2"}}, 32, 32, 32, SamplerType::Independent, 9}));
   EXPECT_TRUE(agree(nested, fourD)) << describe(nested) << " vs " << describe(fourD);
   // ... and a different AO distance gives a clearly different mean (the test can fail).
-  const Estimate shorter = meanOverPixels(
-      render(scene, {"stage3@ref", {{"ao-distance", "0.05"}}, 32, 32, 32}));
+  const Estimate shorter =
+      meanOverPixels(render(scene, {"stage3@ref", {{"ao-distance", "0.05"}}, 32, 32, 32}));
   EXPECT_FALSE(agree(shorter, fourD));
 }
 
 // ---- Recursive estimators in the closed furnace: albedo a = 0.5, emission Le = 1 ----
 
-double truncatedFurnace(int depth) { return (1.0 - std::pow(0.5, depth + 1)) / (1.0 - 0.5); }
+double truncatedFurnace(int depth) {
+  return (1.0 - std::pow(0.5, depth + 1)) / (1.0 - 0.5);
+}
 
 TEST(StageFurnace, NaiveRecursionMatchesTheTruncatedSeriesWithExactRayCounts) {
   PATHWAY_REQUIRE_SOLUTIONS();
@@ -107,9 +113,12 @@ TEST(StageFurnace, NaiveRecursionMatchesTheTruncatedSeriesWithExactRayCounts) {
     int branching, depth;
   };
   for (const Case& c : {Case{1, 0}, Case{2, 3}, Case{3, 2}, Case{1, 6}}) {
-    RenderSpec spec{"stage4@ref",
-                    {{"branching", std::to_string(c.branching)}, {"depth", std::to_string(c.depth)}},
-                    16, 16, 8};
+    RenderSpec spec{
+        "stage4@ref",
+        {{"branching", std::to_string(c.branching)}, {"depth", std::to_string(c.depth)}},
+        16,
+        16,
+        8};
     const RenderResult result = render(scene, spec);
     const Estimate L = meanOverPixels(result);
     EXPECT_TRUE(agree(L, truncatedFurnace(c.depth)))
@@ -155,13 +164,16 @@ TEST(StageFurnace, PathTracerMatchesTruncatedAndUnlimitedSeriesWithAndWithoutNee
       // rr-depth high: no roulette, so the truncated series is exact.
       RenderSpec spec{"stage5@ref",
                       {{"max-depth", std::to_string(depth)}, {"rr-depth", "100"}, {"nee", nee}},
-                      16, 16, 32};
+                      16,
+                      16,
+                      32};
       const Estimate L = meanOverPixels(render(scene, spec));
-      EXPECT_TRUE(agree(L, truncatedFurnace(depth))) << "nee " << nee << " depth " << depth << ": "
-                                                      << describe(L);
+      EXPECT_TRUE(agree(L, truncatedFurnace(depth)))
+          << "nee " << nee << " depth " << depth << ": " << describe(L);
     }
     // No depth limit, Russian roulette from the first bounce: Le / (1 - a) = 2, and it ends.
-    RenderSpec spec{"stage5@ref", {{"max-depth", "-1"}, {"rr-depth", "0"}, {"nee", nee}}, 16, 16, 64};
+    RenderSpec spec{
+        "stage5@ref", {{"max-depth", "-1"}, {"rr-depth", "0"}, {"nee", nee}}, 16, 16, 64};
     const Estimate L = meanOverPixels(render(scene, spec));
     EXPECT_TRUE(agree(L, 2.0)) << "nee " << nee << ": " << describe(L);
     EXPECT_FALSE(agree(L, truncatedFurnace(3)));  // not just a truncated sum
@@ -173,7 +185,8 @@ TEST(StageFurnace, WhiteFurnaceIsOneEverywhereAndTerminatesAtAlbedoOne) {
   const Scene scene = sceneFile("white_furnace.gltf");
   for (const char* nee : {"0", "1"}) {
     // Albedo 1, no depth cap: only Russian roulette (q < 1) or escaping ends a path.
-    RenderSpec spec{"stage5@ref", {{"max-depth", "-1"}, {"rr-depth", "0"}, {"nee", nee}}, 24, 24, 32};
+    RenderSpec spec{
+        "stage5@ref", {{"max-depth", "-1"}, {"rr-depth", "0"}, {"nee", nee}}, 24, 24, 32};
     const RenderResult result = render(scene, spec);
     const Estimate L = meanOverPixels(result);
     EXPECT_TRUE(agree(L, 1.0)) << "nee " << nee << ": " << describe(L);

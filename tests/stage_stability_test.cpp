@@ -4,14 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "reference_variant.h"
 #include "render_helpers.h"
 #include "scene/emitters.h"
 #include "scene/gltf_loader.h"
 #include "test_scenes.h"
-
-#include <glm/gtc/matrix_transform.hpp>
 
 namespace pathway {
 namespace {
@@ -65,7 +64,8 @@ TEST(StageStability, ShrinkingLightAtFixedPowerNeedsNextEventEstimation) {
     // Means agree while the light is large enough for bounce rays to find it often; at the
     // smallest size the no-NEE estimate has too few light hits for its own error bar to be honest.
     if (i < 2) {
-      EXPECT_TRUE(agree(meanOverPixels(withNee), meanOverPixels(withoutNee))) << "side " << sides[i];
+      EXPECT_TRUE(agree(meanOverPixels(withNee), meanOverPixels(withoutNee)))
+          << "side " << sides[i];
     }
   }
   // Without NEE the relative variance grows like 1/area (x256 here; we ask for x30), with NEE it
@@ -78,13 +78,15 @@ TEST(StageStability, ShrinkingLightAtFixedPowerNeedsNextEventEstimation) {
 TEST(StageStability, SmallLightCentreMatchesTheFormFactor) {
   PATHWAY_REQUIRE_SOLUTIONS();
   // Radiance of the floor right below a square light of side s at height 1 with power 1:
-  // L = ρ/π · E, E = Φ/(π s²) · π · F, F = 4 · (1/2π) · 2 · (a/r) · atan(a/r), a = s/2, r = √(1+a²).
+  // L = ρ/π · E, E = Φ/(π s²) · π · F, F = 4 · (1/2π) · 2 · (a/r) · atan(a/r), a = s/2, r =
+  // √(1+a²).
   const double side = 0.1, a = 0.5 * side, r = std::sqrt(1.0 + a * a);
   const double F = 4.0 * (1.0 / (2.0 * M_PI)) * 2.0 * (a / r) * std::atan(a / r);
   const double expected = 0.5 / M_PI * (1.0 / (M_PI * side * side)) * M_PI * F;
-  const RenderResult result = render(test::smallLight(side),
-                                     {"stage5@ref", {{"max-depth", "1"}}, 33, 33, 1024});
-  const Estimate centre = meanOverPixels(result, 0, [](int x, int y) { return x == 16 && y == 16; });
+  const RenderResult result =
+      render(test::smallLight(side), {"stage5@ref", {{"max-depth", "1"}}, 33, 33, 1024});
+  const Estimate centre =
+      meanOverPixels(result, 0, [](int x, int y) { return x == 16 && y == 16; });
   // The centre pixel sees ±4.5 cm of floor along the view (the camera looks down at 22°), where
   // L ∝ (1 + d²)^-2 falls by up to 0.4 %; the pixel's average sits about 0.14 % under the centre
   // value. Allowance 0.3 %: a wrong factor anywhere in the estimator is far larger.
@@ -96,8 +98,9 @@ TEST(StageStability, LightTouchingAWallStaysFiniteAndUnbiased) {
   PATHWAY_REQUIRE_SOLUTIONS();
   const Scene scene = loadScene(std::string(PATHWAY_SCENES_DIR) + "/light_touching_wall.gltf");
   const RenderResult nee = render(scene, {"stage5@ref", {{"max-depth", "3"}}, 32, 32, 64});
-  const RenderResult noNee =
-      render(scene, {"stage5@ref", {{"max-depth", "3"}, {"nee", "0"}}, 32, 32, 64, SamplerType::Independent, 2});
+  const RenderResult noNee = render(
+      scene,
+      {"stage5@ref", {{"max-depth", "3"}, {"nee", "0"}}, 32, 32, 64, SamplerType::Independent, 2});
   expectFiniteAndNonNegative(nee, "nee");
   expectFiniteAndNonNegative(noNee, "no nee");
   EXPECT_TRUE(agree(meanOverPixels(nee), meanOverPixels(noNee)));
@@ -120,7 +123,7 @@ Scene roomWithDegenerateEmitters() {
   Mesh mesh;
   mesh.name = "degenerate emitters";
   mesh.positions = {{0, 0.5f, 0}, {0.1f, 0.5f, 0}, {0.2f, 0.5f, 0},  // collinear: zero area
-                    {0, 0.4f, 0}, {0, 0.4f, 0}, {0, 0.4f, 0}};        // one point three times
+                    {0, 0.4f, 0}, {0, 0.4f, 0},    {0, 0.4f, 0}};    // one point three times
   mesh.triangles = {{0, 1, 2}, {3, 4, 5}};
   mesh.material = 2;  // the emissive material
   scene.meshes.push_back(std::move(mesh));
@@ -148,7 +151,8 @@ TEST(StageStability, GrazingCameraRaysStayFiniteInEveryStage) {
   // Eye exactly in the floor plane, looking along it: rays graze the floor.
   scene.camera->cameraToWorld =
       glm::inverse(glm::lookAt(Vec3(0.0f, -1.0f, 0.9f), Vec3(0.0f, -1.0f, -1.0f), Vec3(0, 1, 0)));
-  for (const char* integrator : {"stage1@ref", "stage2@ref", "stage3@ref", "stage4@ref", "stage5@ref"}) {
+  for (const char* integrator :
+       {"stage1@ref", "stage2@ref", "stage3@ref", "stage4@ref", "stage5@ref"}) {
     expectFiniteAndNonNegative(render(scene, {integrator, {}, 24, 24, 8}), integrator);
   }
 }

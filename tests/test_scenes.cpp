@@ -34,8 +34,8 @@ Scene openPlane(float scale, float offset, float halfSize) {
           shift + Vec3(-h, 0, -h), 0);
   CameraPlacement camera;
   camera.yfov = glm::radians(40.0f);
-  camera.cameraToWorld = glm::inverse(glm::lookAt(shift + Vec3(0, 2, 2) * scale, shift,
-                                                  Vec3(0, 1, 0)));
+  camera.cameraToWorld =
+      glm::inverse(glm::lookAt(shift + Vec3(0, 2, 2) * scale, shift, Vec3(0, 1, 0)));
   scene.camera = camera;
   finishScene(scene);
   return scene;

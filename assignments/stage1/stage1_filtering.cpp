@@ -20,7 +20,9 @@ namespace {
 // ---- 1D filter profiles, on their natural support; the 2D filter is f(x)·f(y). ----
 
 // Placeholder shape used until a profile is written: the box.
-float placeholderProfile(float x) { return std::fabs(x) <= 0.5f ? 1.0f : 0.0f; }
+float placeholderProfile(float x) {
+  return std::fabs(x) <= 0.5f ? 1.0f : 0.0f;
+}
 
 float boxFilter(float x) {
   PATHWAY_TODO("box filter: 1 on [-0.5, 0.5], 0 elsewhere");
@@ -57,13 +59,15 @@ void splat(FilmBlock& film, Vec2 p, const Color& radiance, const PixelFilter& fi
 }
 
 const bool registered = [] {
-  registerFilterFunctions(PATHWAY_THIS_VARIANT, {boxFilter, tentFilter, mitchellNetravaliFilter,
-                                                 gaussianFilter, splat});
-  return registerIntegrator({variantIntegratorName("stage1", PATHWAY_THIS_VARIANT), 1,
-                             PATHWAY_THIS_VARIANT,
-                             "filtered supersampling: pixel filters and the splat, eye-light shading",
-                             {},
-                             [](const ParamValues&, const Scene&) { return std::make_unique<EyeLightIntegrator>(); }});
+  registerFilterFunctions(PATHWAY_THIS_VARIANT,
+                          {boxFilter, tentFilter, mitchellNetravaliFilter, gaussianFilter, splat});
+  return registerIntegrator(
+      {variantIntegratorName("stage1", PATHWAY_THIS_VARIANT),
+       1,
+       PATHWAY_THIS_VARIANT,
+       "filtered supersampling: pixel filters and the splat, eye-light shading",
+       {},
+       [](const ParamValues&, const Scene&) { return std::make_unique<EyeLightIntegrator>(); }});
 }();
 
 }  // namespace

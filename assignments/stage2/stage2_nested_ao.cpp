@@ -2,7 +2,8 @@
 //
 // For the surface point P seen through the pixel, ambient occlusion is the cosine-weighted
 // fraction of the hemisphere that is open within a distance D:
-//     AO(P) = (1/π) ∫_Ω V(P, ω) cos θ dω,   V = 1 when a ray of length D from P along ω hits nothing.
+//     AO(P) = (1/π) ∫_Ω V(P, ω) cos θ dω,   V = 1 when a ray of length D from P along ω hits
+//     nothing.
 // The pixel value is the filtered screen integral of AO (your stage 1 does the filtering), so
 // there are two nested 2D integrals: for every eye sample, M AO rays.
 //
@@ -32,7 +33,8 @@ float cosineHemispherePdf(float cosTheta) {
 // Useful: Frame(hit.normal).toWorld(local) turns a local direction into a world one;
 // RayTracer::spawnRay(hit, direction, tMax) makes a ray that cannot hit its own surface;
 // context.tracer.occluded(ray, RayKind::Secondary, context.counters) says whether it is blocked.
-float ambientOcclusionSample(RenderContext& context, const SurfaceHit& hit, Vec2 u, float distance) {
+float ambientOcclusionSample(RenderContext& context, const SurfaceHit& hit, Vec2 u,
+                             float distance) {
   PATHWAY_TODO("trace one AO ray of length `distance` and return V cos(theta) / (pi p)");
   (void)context, (void)hit, (void)u, (void)distance;
   return 1.0f;  // placeholder: nothing is ever occluded
@@ -62,13 +64,15 @@ const bool registered = [] {
   kit.cosineHemispherePdf = cosineHemispherePdf;
   kit.ambientOcclusionSample = ambientOcclusionSample;
   return registerIntegrator(
-      {variantIntegratorName("stage2", PATHWAY_THIS_VARIANT), 2, PATHWAY_THIS_VARIANT,
+      {variantIntegratorName("stage2", PATHWAY_THIS_VARIANT),
+       2,
+       PATHWAY_THIS_VARIANT,
        "nested AO: per eye sample, M cosine-weighted AO rays of length D",
        {{"ao-rays", 4, 1, 1024, true, "M: AO rays per eye sample"},
         {"ao-distance", 0.25, 1e-6, 1e6, false, "D: how far an AO ray looks for blockers"}},
        [](const ParamValues& p, const Scene&) {
-         return std::make_unique<NestedAmbientOcclusion>(p.integer("ao-rays"),
-                                                         static_cast<float>(p.number("ao-distance")));
+         return std::make_unique<NestedAmbientOcclusion>(
+             p.integer("ao-rays"), static_cast<float>(p.number("ao-distance")));
        }});
 }();
 

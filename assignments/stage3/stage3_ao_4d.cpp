@@ -23,8 +23,9 @@ class AmbientOcclusion4D : public Integrator {
     // Dimensions 0-1 of this sample already placed the eye ray in the pixel.
     const auto hit = context.tracer.intersect(cameraRay, RayKind::Primary, context.counters);
     if (!hit) return context.scene.background;
-    PATHWAY_TODO("take the AO direction from dimensions 2-3 of the same sample and return "
-                 "one AO estimate (your stage 2 function is kit_.ambientOcclusionSample)");
+    PATHWAY_TODO(
+        "take the AO direction from dimensions 2-3 of the same sample and return "
+        "one AO estimate (your stage 2 function is kit_.ambientOcclusionSample)");
     (void)samples, (void)aoDistance_, (void)kit_;
     // Placeholder: the surface lit from the eye.
     return Color(std::fabs(glm::dot(hit->normal, glm::normalize(cameraRay.direction))));
@@ -36,7 +37,9 @@ class AmbientOcclusion4D : public Integrator {
 };
 
 const bool registered = registerIntegrator(
-    {variantIntegratorName("stage3", PATHWAY_THIS_VARIANT), 3, PATHWAY_THIS_VARIANT,
+    {variantIntegratorName("stage3", PATHWAY_THIS_VARIANT),
+     3,
+     PATHWAY_THIS_VARIANT,
      "4D AO: one sample = (x, y, direction) drawn together; one eye ray + one AO ray",
      {{"ao-distance", 0.25, 1e-6, 1e6, false, "D: how far an AO ray looks for blockers"}},
      [](const ParamValues& p, const Scene&) {

@@ -33,7 +33,8 @@ struct LightSample {
 // Picks an emitting triangle (by area or by power) and a uniform point on it.
 class LightSampler {
  public:
-  LightSampler(const Scene& scene, bool powerWeighted) : emitters_(collectEmissiveTriangles(scene)) {
+  LightSampler(const Scene& scene, bool powerWeighted)
+      : emitters_(collectEmissiveTriangles(scene)) {
     std::vector<double> weights;
     for (const EmissiveTriangle& e : emitters_) {
       const Color power = e.power();
@@ -81,8 +82,9 @@ class PathTracer : public Integrator {
   Color Li(const Ray& cameraRay, SampleStream& samples, RenderContext& context) const override {
     const auto hit = context.tracer.intersect(cameraRay, RayKind::Primary, context.counters);
     if (!hit) return context.scene.background;
-    PATHWAY_TODO("the path loop: emission (counted once), NEE, one continuation ray per bounce, "
-                 "Russian roulette with the 1/q weight");
+    PATHWAY_TODO(
+        "the path loop: emission (counted once), NEE, one continuation ray per bounce, "
+        "Russian roulette with the 1/q weight");
     (void)samples;
     // Placeholder: the surface lit from the eye, plus what it emits.
     const float cosTheta = std::fabs(glm::dot(hit->normal, glm::normalize(cameraRay.direction)));
@@ -110,7 +112,9 @@ class PathTracer : public Integrator {
 };
 
 const bool registered = registerIntegrator(
-    {variantIntegratorName("stage5", PATHWAY_THIS_VARIANT), 5, PATHWAY_THIS_VARIANT,
+    {variantIntegratorName("stage5", PATHWAY_THIS_VARIANT),
+     5,
+     PATHWAY_THIS_VARIANT,
      "path tracing: one ray per bounce, next-event estimation, Russian roulette",
      {{"max-depth", 5, -1, 1000, true,
        "most bounces a path takes (0: emitters only, 1: direct light; -1: no limit)"},

@@ -8,7 +8,8 @@ namespace pathway {
 
 class ProgressBar {
  public:
-  explicit ProgressBar(bool enabled) : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
+  explicit ProgressBar(bool enabled)
+      : enabled_(enabled), start_(std::chrono::steady_clock::now()) {}
   ~ProgressBar() { finish(); }
 
   void update(double fraction, const char* label) {

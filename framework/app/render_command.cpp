@@ -76,15 +76,16 @@ int run(const RenderOptions& options) {
   s.width = options.width;
   s.height = options.height;
   if (s.height == 0) {
-    const float aspect = scene.camera && scene.camera->aspectRatio ? *scene.camera->aspectRatio : 1.0f;
+    const float aspect =
+        scene.camera && scene.camera->aspectRatio ? *scene.camera->aspectRatio : 1.0f;
     s.height = std::max(1, static_cast<int>(std::lround(options.width / aspect)));
   }
   const RayTracer tracer(scene);
 
   ProgressBar progress(!options.quiet);
   const RenderResult result = runRender(scene, tracer, request, [&](const RenderStats& stats) {
-    const std::string label = std::to_string(stats.samplesPerPixel) + "/" +
-                              std::to_string(s.samplesPerPixel) + " spp";
+    const std::string label =
+        std::to_string(stats.samplesPerPixel) + "/" + std::to_string(s.samplesPerPixel) + " spp";
     progress.update(static_cast<double>(stats.samplesPerPixel) / s.samplesPerPixel, label.c_str());
   });
   progress.finish();
@@ -95,8 +96,8 @@ int run(const RenderOptions& options) {
   const RayCounters& c = result.stats.counters;
   const double seconds = result.stats.seconds;
   if (!options.quiet) {
-    std::printf("%s: %s, %dx%d, %u spp, %.3f s\n", options.scene.c_str(), info.name.c_str(), s.width,
-                s.height, result.stats.samplesPerPixel, seconds);
+    std::printf("%s: %s, %dx%d, %u spp, %.3f s\n", options.scene.c_str(), info.name.c_str(),
+                s.width, s.height, result.stats.samplesPerPixel, seconds);
     std::printf("rays: %llu primary, %llu secondary, %llu shadow; %.2f M rays/s\n",
                 static_cast<unsigned long long>(c.primary),
                 static_cast<unsigned long long>(c.secondary),
@@ -111,8 +112,10 @@ int run(const RenderOptions& options) {
                  "(negative lobes at low spp); they are written as 0\n",
                  result.unresolvedPixels);
   if (!result.todos.empty())
-    std::fprintf(stderr, "pathway: note: %zu TODO(s) in the stage code ran; this image uses "
-                 "placeholders\n", result.todos.size());
+    std::fprintf(stderr,
+                 "pathway: note: %zu TODO(s) in the stage code ran; this image uses "
+                 "placeholders\n",
+                 result.todos.size());
   for (const std::string& output : options.outputs) std::printf("wrote %s\n", output.c_str());
   return 0;
 }
@@ -130,13 +133,15 @@ Command addRenderCommand(CLI::App& app) {
       "  pathway render scenes/cornell_box.gltf -i stage2 -p ao-rays=4 -p ao-distance=0.3");
   render->add_option("scene", options->scene, "glTF 2.0 scene (.gltf or .glb)")
       ->capture_default_str();
-  render->add_option("-i,--integrator", options->integrator,
-                     "Integrator by name: stageN is yours, stageN@ref the reference")
+  render
+      ->add_option("-i,--integrator", options->integrator,
+                   "Integrator by name: stageN is yours, stageN@ref the reference")
       ->capture_default_str();
   render->add_option("-p,--param", options->params,
                      "Integrator parameter name=value (repeatable; see --list)");
-  render->add_option("-o,--output", options->outputs,
-                     "Output file(s): .exr (linear, variance, metadata) or .png (sRGB)")
+  render
+      ->add_option("-o,--output", options->outputs,
+                   "Output file(s): .exr (linear, variance, metadata) or .png (sRGB)")
       ->capture_default_str();
   render->add_option("--spp", options->spp, "Samples per pixel")
       ->check(CLI::Range(1u, 1u << 20))
@@ -144,11 +149,13 @@ Command addRenderCommand(CLI::App& app) {
   render->add_option("--width", options->width, "Image width in pixels")
       ->check(CLI::Range(1, 16384))
       ->capture_default_str();
-  render->add_option("--height", options->height,
-                     "Image height in pixels (default: from the camera's aspect ratio)")
+  render
+      ->add_option("--height", options->height,
+                   "Image height in pixels (default: from the camera's aspect ratio)")
       ->check(CLI::Range(1, 16384));
-  render->add_option("--sampler", options->sampler,
-                     "independent, stratified or sobol (default: the integrator's; stage 3 uses sobol)");
+  render->add_option(
+      "--sampler", options->sampler,
+      "independent, stratified or sobol (default: the integrator's; stage 3 uses sobol)");
   render->add_option("--seed", options->seed, "Random seed; same seed, same image")
       ->capture_default_str();
   render->add_option("--threads", options->threads, "Worker threads (0: all cores)")
@@ -156,8 +163,9 @@ Command addRenderCommand(CLI::App& app) {
       ->capture_default_str();
   render->add_option("--filter", options->filter, "Pixel filter: box, tent, mitchell, gaussian")
       ->capture_default_str();
-  render->add_option("--filter-radius", options->filterRadius,
-                     "Filter support in pixels (default: box 0.5, tent 1, mitchell 2, gaussian 1.5)")
+  render
+      ->add_option("--filter-radius", options->filterRadius,
+                   "Filter support in pixels (default: box 0.5, tent 1, mitchell 2, gaussian 1.5)")
       ->check(CLI::Range(0.0f, 16.0f));
   render->add_option("--exposure", options->exposure, "PNG exposure in stops (EXR is never scaled)")
       ->check(CLI::Range(-20.0f, 20.0f))

@@ -17,7 +17,7 @@ constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
 struct Ray {
   Vec3 origin;
-  Vec3 direction;       // need not be unit length; distances are in units of |direction|
+  Vec3 direction;          // need not be unit length; distances are in units of |direction|
   float tMax = kInfinity;  // the segment is (0, tMax]
 };
 
@@ -25,7 +25,9 @@ inline bool isFinite(const Vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-inline float maxComponent(const Vec3& v) { return std::fmax(v.x, std::fmax(v.y, v.z)); }
+inline float maxComponent(const Vec3& v) {
+  return std::fmax(v.x, std::fmax(v.y, v.z));
+}
 
 // An orthonormal basis (tangent, bitangent, normal) around a unit normal, without branches
 // that flip at the poles (Duff et al. 2017, "Building an Orthonormal Basis, Revisited").

@@ -23,12 +23,15 @@ std::string relativeToProject(const char* file) {
 
 }  // namespace
 
-unsigned todoGeneration() { return generation.load(std::memory_order_relaxed); }
+unsigned todoGeneration() {
+  return generation.load(std::memory_order_relaxed);
+}
 
 void reportTodo(TodoSite& site) {
   std::lock_guard<std::mutex> lock(todoMutex);
   site.generationSeen.store(generation.load());
-  if (std::find(sitesHit.begin(), sitesHit.end(), &site) == sitesHit.end()) sitesHit.push_back(&site);
+  if (std::find(sitesHit.begin(), sitesHit.end(), &site) == sitesHit.end())
+    sitesHit.push_back(&site);
   if (std::find(sitesPrinted.begin(), sitesPrinted.end(), &site) != sitesPrinted.end()) return;
   sitesPrinted.push_back(&site);
   std::fprintf(stderr, "TODO not done yet: %s:%d: %s (a placeholder runs meanwhile)\n",

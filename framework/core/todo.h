@@ -1,6 +1,7 @@
 // PATHWAY_TODO("what to write") marks an unfinished piece of a stage. The first time it runs it
 // prints, once, the file and line to open; it never stops the program, so a skeleton still renders
-// its placeholder. The list of TODOs that ran tells the CLI and the grader that a stage is unfinished.
+// its placeholder. The list of TODOs that ran tells the CLI and the grader that a stage is
+// unfinished.
 #pragma once
 
 #include <atomic>
@@ -34,10 +35,10 @@ void clearTodosHit();
 
 }  // namespace pathway
 
-#define PATHWAY_TODO(task)                                                          \
-  do {                                                                              \
-    static ::pathway::TodoSite pathwayTodoSite{__FILE__, __LINE__, task};           \
-    if (pathwayTodoSite.generationSeen.load(std::memory_order_relaxed) !=          \
-        ::pathway::todoGeneration())                                                \
-      ::pathway::reportTodo(pathwayTodoSite);                                       \
+#define PATHWAY_TODO(task)                                                \
+  do {                                                                    \
+    static ::pathway::TodoSite pathwayTodoSite{__FILE__, __LINE__, task}; \
+    if (pathwayTodoSite.generationSeen.load(std::memory_order_relaxed) != \
+        ::pathway::todoGeneration())                                      \
+      ::pathway::reportTodo(pathwayTodoSite);                             \
   } while (false)

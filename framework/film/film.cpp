@@ -29,7 +29,9 @@ void FilmBlock::addSample(int x, int y, float weight, const Color& radiance) {
   sums_[static_cast<size_t>(y - y0_) * width_ + (x - x0_)].add(weight, glm::dvec3(radiance));
 }
 
-void FilmBlock::clear() { std::fill(sums_.begin(), sums_.end(), PixelSums{}); }
+void FilmBlock::clear() {
+  std::fill(sums_.begin(), sums_.end(), PixelSums{});
+}
 
 Film::Film(int width, int height)
     : width_(width), height_(height), sums_(static_cast<size_t>(width) * height) {}
@@ -40,7 +42,9 @@ void Film::merge(const FilmBlock& block) {
       sums_[static_cast<size_t>(y) * width_ + x] += block.at(x, y);
 }
 
-void Film::clear() { std::fill(sums_.begin(), sums_.end(), PixelSums{}); }
+void Film::clear() {
+  std::fill(sums_.begin(), sums_.end(), PixelSums{});
+}
 
 Image Film::develop(size_t* unresolvedPixels) const {
   Image image(width_, height_);
@@ -73,7 +77,8 @@ Image Film::variance() const {
 
 Image Film::weights() const {
   Image image(width_, height_);
-  for (size_t i = 0; i < sums_.size(); ++i) image.pixels[i] = Color(static_cast<float>(sums_[i].weight));
+  for (size_t i = 0; i < sums_.size(); ++i)
+    image.pixels[i] = Color(static_cast<float>(sums_[i].weight));
   return image;
 }
 

@@ -1,8 +1,10 @@
-// The film: per-pixel sums of filter-weighted samples. A pixel's value is Σ f·L / Σ f (the lecture's
-// numerical normalisation); the extra moments give the variance of that ratio for the grader.
+// The film: per-pixel sums of filter-weighted samples. A pixel's value is Σ f·L / Σ f (the
+// lecture's numerical normalisation); the extra moments give the variance of that ratio for the
+// grader.
 //
-// Rendering writes into FilmBlocks (one per tile, covering the tile plus the filter's reach) and the
-// blocks are merged into the Film in a fixed order, so the image never depends on thread timing.
+// Rendering writes into FilmBlocks (one per tile, covering the tile plus the filter's reach) and
+// the blocks are merged into the Film in a fixed order, so the image never depends on thread
+// timing.
 #pragma once
 
 #include <vector>
@@ -16,13 +18,13 @@ namespace pathway {
 struct PixelSums {
   using Real = double;
   using Vec = glm::dvec3;
-  Vec weightedRadiance{0};          // Σ w·L
-  Real weight = 0;                  // Σ w
-  Real absWeight = 0;               // Σ |w|, to tell "Σw ≈ 0" from "no samples"
-  Vec squaredWeightRadiance{0};     // Σ w²·L
-  Vec squaredWeightRadiance2{0};    // Σ w²·L²
-  Real squaredWeight = 0;           // Σ w²
-  uint32_t sampleCount = 0;         // splats with w != 0
+  Vec weightedRadiance{0};        // Σ w·L
+  Real weight = 0;                // Σ w
+  Real absWeight = 0;             // Σ |w|, to tell "Σw ≈ 0" from "no samples"
+  Vec squaredWeightRadiance{0};   // Σ w²·L
+  Vec squaredWeightRadiance2{0};  // Σ w²·L²
+  Real squaredWeight = 0;         // Σ w²
+  uint32_t sampleCount = 0;       // splats with w != 0
 
   void add(Real w, const Vec& radiance) {
     if (w == 0) return;

@@ -19,10 +19,14 @@ FilterFunctions& slot(Variant variant) {
 
 std::string filterTypeName(FilterType type) {
   switch (type) {
-    case FilterType::Box: return "box";
-    case FilterType::Tent: return "tent";
-    case FilterType::MitchellNetravali: return "mitchell";
-    case FilterType::Gaussian: return "gaussian";
+    case FilterType::Box:
+      return "box";
+    case FilterType::Tent:
+      return "tent";
+    case FilterType::MitchellNetravali:
+      return "mitchell";
+    case FilterType::Gaussian:
+      return "gaussian";
   }
   return "?";
 }
@@ -41,10 +45,14 @@ FilterType parseFilterType(const std::string& name) {
 
 float naturalFilterRadius(FilterType type) {
   switch (type) {
-    case FilterType::Box: return 0.5f;
-    case FilterType::Tent: return 1.0f;
-    case FilterType::MitchellNetravali: return 2.0f;
-    case FilterType::Gaussian: return 1.5f;
+    case FilterType::Box:
+      return 0.5f;
+    case FilterType::Tent:
+      return 1.0f;
+    case FilterType::MitchellNetravali:
+      return 2.0f;
+    case FilterType::Gaussian:
+      return 1.5f;
   }
   return 1.0f;
 }
@@ -72,10 +80,14 @@ float PixelFilter::evaluate1D(float d) const {
   if (std::fabs(d) > radius_) return 0.0f;
   const float x = d * scale_;
   switch (type_) {
-    case FilterType::Box: return functions_->box(x);
-    case FilterType::Tent: return functions_->tent(x);
-    case FilterType::MitchellNetravali: return functions_->mitchellNetravali(x);
-    case FilterType::Gaussian: return functions_->gaussian(x, naturalFilterRadius(type_) / 3.0f);
+    case FilterType::Box:
+      return functions_->box(x);
+    case FilterType::Tent:
+      return functions_->tent(x);
+    case FilterType::MitchellNetravali:
+      return functions_->mitchellNetravali(x);
+    case FilterType::Gaussian:
+      return functions_->gaussian(x, naturalFilterRadius(type_) / 3.0f);
   }
   return 0.0f;
 }

@@ -17,7 +17,8 @@ namespace fs = std::filesystem;
 
 std::string lowerExtension(const std::string& path) {
   std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   return ext;
 }
 
@@ -89,13 +90,14 @@ void writePng(const std::string& path, const Image& image, float exposure) {
   data.reserve(image.pixels.size() * 3);
   for (const Color& pixel : image.pixels)
     for (int c = 0; c < 3; ++c)
-      data.push_back(static_cast<unsigned char>(std::lround(255.0f * linearToSrgb(scale * pixel[c]))));
+      data.push_back(
+          static_cast<unsigned char>(std::lround(255.0f * linearToSrgb(scale * pixel[c]))));
   OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
   writeAtomically(path, spec, OIIO::TypeDesc::UINT8, data.data());
 }
 
-void writeImageFile(const std::string& path, const FilmImages& images, const ImageMetadata& metadata,
-                    float exposure) {
+void writeImageFile(const std::string& path, const FilmImages& images,
+                    const ImageMetadata& metadata, float exposure) {
   checkImagePath(path);
   if (lowerExtension(path) == ".exr") return writeExr(path, images, metadata);
   writePng(path, images.color, exposure);

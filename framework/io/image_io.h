@@ -25,8 +25,8 @@ void writeExr(const std::string& path, const FilmImages& images, const ImageMeta
 // `exposure` in stops: pixel values are scaled by 2^exposure before the sRGB curve.
 void writePng(const std::string& path, const Image& image, float exposure);
 // Picks the format from the extension (.exr or .png); throws PathwayError for anything else.
-void writeImageFile(const std::string& path, const FilmImages& images, const ImageMetadata& metadata,
-                    float exposure);
+void writeImageFile(const std::string& path, const FilmImages& images,
+                    const ImageMetadata& metadata, float exposure);
 
 // Throws PathwayError unless `path` has a known extension and its folder exists, so a render can
 // refuse a bad output path before it starts.

@@ -29,7 +29,8 @@ const IntegratorInfo& findIntegrator(const std::string& name) {
   auto it = registry().find(name);
   if (it != registry().end()) return it->second;
   std::string known;
-  for (const IntegratorInfo* info : allIntegrators()) known += (known.empty() ? "" : ", ") + info->name;
+  for (const IntegratorInfo* info : allIntegrators())
+    known += (known.empty() ? "" : ", ") + info->name;
   throw PathwayError("unknown integrator '" + name + "' (known: " + known +
                      "; 'pathway render --list' describes them)");
 }

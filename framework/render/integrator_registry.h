@@ -14,8 +14,8 @@
 namespace pathway {
 
 struct IntegratorInfo {
-  std::string name;     // "stage2" or "stage2@ref"
-  int stage = 0;        // 1..5, the course stage it belongs to
+  std::string name;  // "stage2" or "stage2@ref"
+  int stage = 0;     // 1..5, the course stage it belongs to
   Variant variant = Variant::Student;
   std::string summary;  // one line for --list
   std::vector<ParamSpec> params;

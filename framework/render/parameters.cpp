@@ -10,7 +10,8 @@ namespace pathway {
 
 double ParamValues::number(const std::string& name) const {
   auto it = values_.find(name);
-  if (it == values_.end()) throw PathwayError("internal: parameter '" + name + "' was not declared");
+  if (it == values_.end())
+    throw PathwayError("internal: parameter '" + name + "' was not declared");
   return it->second;
 }
 
@@ -33,7 +34,8 @@ ParamValues resolveParams(const std::string& integratorName, const std::vector<P
       if (candidate.name == name) spec = &candidate;
     if (!spec) {
       std::string known;
-      for (const ParamSpec& candidate : specs) known += (known.empty() ? "" : ", ") + candidate.name;
+      for (const ParamSpec& candidate : specs)
+        known += (known.empty() ? "" : ", ") + candidate.name;
       throw PathwayError("integrator '" + integratorName + "' has no parameter '" + name + "'" +
                          (known.empty() ? " (it takes none)" : " (it takes: " + known + ")"));
     }
@@ -42,14 +44,14 @@ ParamValues resolveParams(const std::string& integratorName, const std::vector<P
     const std::string range = "[" + formatParamValue(*spec, spec->minValue) + ", " +
                               formatParamValue(*spec, spec->maxValue) + "]";
     if (text.empty() || *end != '\0' || !std::isfinite(value))
-      throw PathwayError("parameter '" + name + "' of '" + integratorName + "' must be a number in " +
-                         range + ", got '" + text + "'");
+      throw PathwayError("parameter '" + name + "' of '" + integratorName +
+                         "' must be a number in " + range + ", got '" + text + "'");
     if (spec->isInteger && value != std::floor(value))
       throw PathwayError("parameter '" + name + "' of '" + integratorName +
                          "' must be a whole number in " + range + ", got '" + text + "'");
     if (value < spec->minValue || value > spec->maxValue)
-      throw PathwayError("parameter '" + name + "' of '" + integratorName + "' is out of range: " +
-                         text + " is not in " + range);
+      throw PathwayError("parameter '" + name + "' of '" + integratorName +
+                         "' is out of range: " + text + " is not in " + range);
     values.set(name, value);
   }
   return values;

@@ -24,13 +24,13 @@ void checkRayBudget(const std::string& integrator, uint64_t branching, uint64_t 
                     uint64_t budget) {
   const uint64_t rays = naiveRecursionRaysPerSample(branching, depth);
   if (rays <= budget) return;
-  const std::string count = rays == std::numeric_limits<uint64_t>::max()
-                                ? "more than 1.8e19"
-                                : std::to_string(rays);
+  const std::string count =
+      rays == std::numeric_limits<uint64_t>::max() ? "more than 1.8e19" : std::to_string(rays);
   throw PathwayError(integrator + ": branching " + std::to_string(branching) + " to depth " +
                      std::to_string(depth) + " casts " + count +
                      " rays per camera sample (1 + N + ... + N^depth), over the budget of " +
-                     std::to_string(budget) + " (parameter max-rays). This is the lecture's "
+                     std::to_string(budget) +
+                     " (parameter max-rays). This is the lecture's "
                      "combinatorial explosion: lower branching or depth, or raise max-rays.");
 }
 

@@ -22,8 +22,8 @@ ImageMetadata describe(const Scene& scene, const RenderRequest& request, const I
       {"pathway:sampler", samplerTypeName(s.sampler)},
       {"pathway:seed", std::to_string(s.seed)},
       {"pathway:filter", filterTypeName(s.filter)},
-      {"pathway:filterRadius", std::to_string(s.filterRadius > 0 ? s.filterRadius
-                                                                  : naturalFilterRadius(s.filter))},
+      {"pathway:filterRadius",
+       std::to_string(s.filterRadius > 0 ? s.filterRadius : naturalFilterRadius(s.filter))},
       {"pathway:primaryRays", std::to_string(c.primary)},
       {"pathway:secondaryRays", std::to_string(c.secondary)},
       {"pathway:shadowRays", std::to_string(c.shadow)},

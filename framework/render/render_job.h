@@ -19,16 +19,17 @@ namespace pathway {
 
 struct RenderRequest {
   std::string integrator = "stage1";
-  std::map<std::string, std::string> params;  // name -> value text, checked against the declarations
+  std::map<std::string, std::string>
+      params;  // name -> value text, checked against the declarations
   RenderSettings settings;
 };
 
 struct RenderResult {
   FilmImages images;
   RenderStats stats;
-  size_t unresolvedPixels = 0;   // Σw ≈ 0 (negative filter lobes at low spp); written as 0
+  size_t unresolvedPixels = 0;    // Σw ≈ 0 (negative filter lobes at low spp); written as 0
   std::vector<TodoRecord> todos;  // unfinished stage code that ran during this render
-  ImageMetadata metadata;        // settings and counters, for the EXR header
+  ImageMetadata metadata;         // settings and counters, for the EXR header
 };
 
 // Validates the request (integrator name, parameters, settings) before any work is done, then

@@ -43,7 +43,8 @@ Renderer::Renderer(const RayTracer& tracer, const Camera& camera, const Integrat
       filterFunctions_(filterFunctions),
       settings_(checked(settings)),
       filter_(settings.filter,
-              settings.filterRadius > 0.0f ? settings.filterRadius : naturalFilterRadius(settings.filter),
+              settings.filterRadius > 0.0f ? settings.filterRadius
+                                           : naturalFilterRadius(settings.filter),
               filterFunctions),
       sampler_(settings.sampler, settings.samplesPerPixel, settings.seed),
       film_(settings.width, settings.height) {
@@ -122,8 +123,7 @@ bool Renderer::renderPass(const std::atomic<bool>* cancel) {
   });
   for (const Tile& tile : tiles_) stats_.counters += tile.counters;
   stats_.samplesPerPixel += count;
-  stats_.seconds +=
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return true;
 }
 

@@ -3,6 +3,8 @@
 // is bit-identical for any thread count. A render can be cancelled between tiles.
 #pragma once
 
+#include <tbb/task_arena.h>
+
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -15,8 +17,6 @@
 #include "render/integrator.h"
 #include "sampling/sampler.h"
 #include "scene/camera.h"
-
-#include <tbb/task_arena.h>
 
 namespace pathway {
 
@@ -35,7 +35,7 @@ struct RenderSettings {
 
 struct RenderStats {
   RayCounters counters;
-  double seconds = 0.0;         // wall time spent in passes
+  double seconds = 0.0;          // wall time spent in passes
   uint32_t samplesPerPixel = 0;  // done so far
 };
 

@@ -110,7 +110,9 @@ Sampler::Sampler(SamplerType type, uint32_t samplesPerPixel, uint64_t seed)
   strataY_ = (n + x - 1) / x;
 }
 
-uint64_t Sampler::pixelKey(uint32_t px, uint32_t py) const { return hashValues(px, py, seed_); }
+uint64_t Sampler::pixelKey(uint32_t px, uint32_t py) const {
+  return hashValues(px, py, seed_);
+}
 
 float Sampler::get(uint32_t px, uint32_t py, uint32_t index, uint32_t dimension) const {
   return get(pixelKey(px, py), index, dimension);

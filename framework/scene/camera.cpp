@@ -26,8 +26,8 @@ Camera::Camera(const Vec3& position, const Vec3& lookAt, const Vec3& up, float y
   setup(position, glm::normalize(lookAt - position), up, yfovRadians, width, height);
 }
 
-void Camera::setup(const Vec3& position, const Vec3& forward, const Vec3& up, float yfov,
-                   int width, int height) {
+void Camera::setup(const Vec3& position, const Vec3& forward, const Vec3& up, float yfov, int width,
+                   int height) {
   position_ = position;
   forward_ = forward;
   right_ = glm::normalize(glm::cross(forward, up));

@@ -11,7 +11,7 @@ namespace pathway {
 
 struct EmissiveTriangle {
   Vec3 p0, p1, p2;
-  Vec3 normal;       // unit, on the front (counter-clockwise) side
+  Vec3 normal;  // unit, on the front (counter-clockwise) side
   float area = 0.0f;
   Color emission{0.0f};  // radiance leaving the front face (and the back, if doubleSided)
   bool doubleSided = false;

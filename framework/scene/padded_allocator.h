@@ -17,13 +17,19 @@ struct PaddedAllocator {
   template <class U>
   PaddedAllocator(const PaddedAllocator<U>&) {}
 
-  T* allocate(std::size_t n) { return static_cast<T*>(::operator new(n * sizeof(T) + kSlackBytes)); }
+  T* allocate(std::size_t n) {
+    return static_cast<T*>(::operator new(n * sizeof(T) + kSlackBytes));
+  }
   void deallocate(T* p, std::size_t) { ::operator delete(p); }
 
   template <class U>
-  bool operator==(const PaddedAllocator<U>&) const { return true; }
+  bool operator==(const PaddedAllocator<U>&) const {
+    return true;
+  }
   template <class U>
-  bool operator!=(const PaddedAllocator<U>&) const { return false; }
+  bool operator!=(const PaddedAllocator<U>&) const {
+    return false;
+  }
 };
 
 }  // namespace pathway

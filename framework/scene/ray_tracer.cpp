@@ -133,10 +133,12 @@ std::optional<SurfaceHit> RayTracer::intersect(const Ray& ray, RayKind kind,
   const Material& material = scene_.materials[mesh.material];
   hit.albedo = material.baseColor;
   if (material.baseColorTexture >= 0 && !mesh.texcoords.empty()) {
-    const Vec2 uv = w * mesh.texcoords[tri.x] + u * mesh.texcoords[tri.y] + v * mesh.texcoords[tri.z];
+    const Vec2 uv =
+        w * mesh.texcoords[tri.x] + u * mesh.texcoords[tri.y] + v * mesh.texcoords[tri.z];
     hit.albedo *= scene_.textures[material.baseColorTexture].lookup(uv);
   }
-  if (material.isEmissive() && (hit.frontFace || material.doubleSided)) hit.emitted = material.emission;
+  if (material.isEmissive() && (hit.frontFace || material.doubleSided))
+    hit.emitted = material.emission;
   return hit;
 }
 

@@ -25,10 +25,10 @@ struct Texture {
 
 struct Material {
   std::string name;
-  Color baseColor{1.0f};        // glTF baseColorFactor (rgb)
-  int baseColorTexture = -1;    // index into Scene::textures, sampled with the mesh's TEXCOORD_0
-  Color emission{0.0f};         // emissiveFactor x KHR_materials_emissive_strength
-  bool doubleSided = false;     // emits from both faces when true, from the front face otherwise
+  Color baseColor{1.0f};      // glTF baseColorFactor (rgb)
+  int baseColorTexture = -1;  // index into Scene::textures, sampled with the mesh's TEXCOORD_0
+  Color emission{0.0f};       // emissiveFactor x KHR_materials_emissive_strength
+  bool doubleSided = false;   // emits from both faces when true, from the front face otherwise
 
   bool isEmissive() const { return maxComponent(emission) > 0.0f; }
 };
@@ -57,11 +57,12 @@ struct Bounds {
   Vec3 extent() const { return upper - lower; }
 };
 
-// A glTF perspective camera placed in the world. The camera looks down its local -Z axis with +Y up.
+// A glTF perspective camera placed in the world. The camera looks down its local -Z axis with +Y
+// up.
 struct CameraPlacement {
   glm::mat4 cameraToWorld{1.0f};
-  float yfov = 0.0f;                  // vertical field of view, radians
-  std::optional<float> aspectRatio;   // width / height, when the file gives it
+  float yfov = 0.0f;                 // vertical field of view, radians
+  std::optional<float> aspectRatio;  // width / height, when the file gives it
 };
 
 struct Scene {
@@ -72,7 +73,7 @@ struct Scene {
   std::optional<CameraPlacement> camera;  // absent: the renderer frames the bounds
   Color background{0.0f};                 // radiance of rays that leave the scene
   Bounds bounds;
-  std::vector<std::string> warnings;      // one per unsupported feature, already printed
+  std::vector<std::string> warnings;  // one per unsupported feature, already printed
 
   size_t triangleCount() const;
 };

@@ -21,16 +21,21 @@ namespace {
 
 // ---- 1D filter profiles, on their natural support; the 2D filter is f(x)·f(y). ----
 
-float boxFilter(float x) { return std::fabs(x) <= 0.5f ? 1.0f : 0.0f; }
+float boxFilter(float x) {
+  return std::fabs(x) <= 0.5f ? 1.0f : 0.0f;
+}
 
-float tentFilter(float x) { return std::max(0.0f, 1.0f - std::fabs(x)); }
+float tentFilter(float x) {
+  return std::max(0.0f, 1.0f - std::fabs(x));
+}
 
 // Mitchell-Netravali with B = C = 1/3: a cubic that is sharper than the tent and rings less than
 // sinc. Its negative lobes (1 < |x| < 2) are why Σ f can be close to 0 at low sample counts.
 float mitchellNetravaliFilter(float x) {
   const float a = std::fabs(x);
   if (a < 1.0f) return (7.0f * a * a * a - 12.0f * a * a + 16.0f / 3.0f) / 6.0f;
-  if (a <= 2.0f) return (-7.0f / 3.0f * a * a * a + 12.0f * a * a - 20.0f * a + 32.0f / 3.0f) / 6.0f;
+  if (a <= 2.0f)
+    return (-7.0f / 3.0f * a * a * a + 12.0f * a * a - 20.0f * a + 32.0f / 3.0f) / 6.0f;
   return 0.0f;
 }
 
@@ -59,13 +64,15 @@ void splat(FilmBlock& film, Vec2 p, const Color& radiance, const PixelFilter& fi
 }
 
 const bool registered = [] {
-  registerFilterFunctions(PATHWAY_THIS_VARIANT, {boxFilter, tentFilter, mitchellNetravaliFilter,
-                                                 gaussianFilter, splat});
-  return registerIntegrator({variantIntegratorName("stage1", PATHWAY_THIS_VARIANT), 1,
-                             PATHWAY_THIS_VARIANT,
-                             "filtered supersampling: pixel filters and the splat, eye-light shading",
-                             {},
-                             [](const ParamValues&, const Scene&) { return std::make_unique<EyeLightIntegrator>(); }});
+  registerFilterFunctions(PATHWAY_THIS_VARIANT,
+                          {boxFilter, tentFilter, mitchellNetravaliFilter, gaussianFilter, splat});
+  return registerIntegrator(
+      {variantIntegratorName("stage1", PATHWAY_THIS_VARIANT),
+       1,
+       PATHWAY_THIS_VARIANT,
+       "filtered supersampling: pixel filters and the splat, eye-light shading",
+       {},
+       [](const ParamValues&, const Scene&) { return std::make_unique<EyeLightIntegrator>(); }});
 }();
 
 }  // namespace

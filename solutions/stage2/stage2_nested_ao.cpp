@@ -2,7 +2,8 @@
 //
 // For the surface point P seen through the pixel, ambient occlusion is the cosine-weighted
 // fraction of the hemisphere that is open within a distance D:
-//     AO(P) = (1/π) ∫_Ω V(P, ω) cos θ dω,   V = 1 when a ray of length D from P along ω hits nothing.
+//     AO(P) = (1/π) ∫_Ω V(P, ω) cos θ dω,   V = 1 when a ray of length D from P along ω hits
+//     nothing.
 // The pixel value is the filtered screen integral of AO (stage 1), so there are two nested 2D
 // integrals: for every eye sample, M AO rays. Two knobs (eye samples, M) decide the ray count.
 //
@@ -23,10 +24,13 @@ Vec3 sampleCosineHemisphere(Vec2 u) {
   return Vec3(r * std::cos(phi), r * std::sin(phi), std::sqrt(std::fmax(0.0f, 1.0f - u.x)));
 }
 
-float cosineHemispherePdf(float cosTheta) { return cosTheta > 0.0f ? cosTheta * kInvPi : 0.0f; }
+float cosineHemispherePdf(float cosTheta) {
+  return cosTheta > 0.0f ? cosTheta * kInvPi : 0.0f;
+}
 
 // One AO direction: V(P, ω)·cos θ / (π·p(ω)).
-float ambientOcclusionSample(RenderContext& context, const SurfaceHit& hit, Vec2 u, float distance) {
+float ambientOcclusionSample(RenderContext& context, const SurfaceHit& hit, Vec2 u,
+                             float distance) {
   const Vec3 local = sampleCosineHemisphere(u);
   const float pdf = cosineHemispherePdf(local.z);
   if (pdf <= 0.0f) return 0.0f;  // a direction in the surface plane carries no weight
@@ -63,13 +67,15 @@ const bool registered = [] {
   kit.cosineHemispherePdf = cosineHemispherePdf;
   kit.ambientOcclusionSample = ambientOcclusionSample;
   return registerIntegrator(
-      {variantIntegratorName("stage2", PATHWAY_THIS_VARIANT), 2, PATHWAY_THIS_VARIANT,
+      {variantIntegratorName("stage2", PATHWAY_THIS_VARIANT),
+       2,
+       PATHWAY_THIS_VARIANT,
        "nested AO: per eye sample, M cosine-weighted AO rays of length D",
        {{"ao-rays", 4, 1, 1024, true, "M: AO rays per eye sample"},
         {"ao-distance", 0.25, 1e-6, 1e6, false, "D: how far an AO ray looks for blockers"}},
        [](const ParamValues& p, const Scene&) {
-         return std::make_unique<NestedAmbientOcclusion>(p.integer("ao-rays"),
-                                                         static_cast<float>(p.number("ao-distance")));
+         return std::make_unique<NestedAmbientOcclusion>(
+             p.integer("ao-rays"), static_cast<float>(p.number("ao-distance")));
        }});
 }();
 

@@ -31,7 +31,9 @@ class AmbientOcclusion4D : public Integrator {
 };
 
 const bool registered = registerIntegrator(
-    {variantIntegratorName("stage3", PATHWAY_THIS_VARIANT), 3, PATHWAY_THIS_VARIANT,
+    {variantIntegratorName("stage3", PATHWAY_THIS_VARIANT),
+     3,
+     PATHWAY_THIS_VARIANT,
      "4D AO: one sample = (x, y, direction) drawn together; one eye ray + one AO ray",
      {{"ao-distance", 0.25, 1e-6, 1e6, false, "D: how far an AO ray looks for blockers"}},
      [](const ParamValues& p, const Scene&) {

@@ -53,7 +53,9 @@ class NaiveRecursion : public Integrator {
 };
 
 const bool registered = registerIntegrator(
-    {variantIntegratorName("stage4", PATHWAY_THIS_VARIANT), 4, PATHWAY_THIS_VARIANT,
+    {variantIntegratorName("stage4", PATHWAY_THIS_VARIANT),
+     4,
+     PATHWAY_THIS_VARIANT,
      "naive recursive tracing: N random rays at every hit, down to depth D",
      {{"branching", 3, 1, 1024, true, "N: rays cast at every hit"},
       {"depth", 2, 0, 64, true, "D: bounces; 0 shows emitters only, 1 adds direct light"},

@@ -31,7 +31,8 @@ struct LightSample {
 // Picks an emitting triangle (by area or by power) and a uniform point on it.
 class LightSampler {
  public:
-  LightSampler(const Scene& scene, bool powerWeighted) : emitters_(collectEmissiveTriangles(scene)) {
+  LightSampler(const Scene& scene, bool powerWeighted)
+      : emitters_(collectEmissiveTriangles(scene)) {
     std::vector<double> weights;
     for (const EmissiveTriangle& e : emitters_) {
       const Color power = e.power();
@@ -144,7 +145,9 @@ class PathTracer : public Integrator {
 };
 
 const bool registered = registerIntegrator(
-    {variantIntegratorName("stage5", PATHWAY_THIS_VARIANT), 5, PATHWAY_THIS_VARIANT,
+    {variantIntegratorName("stage5", PATHWAY_THIS_VARIANT),
+     5,
+     PATHWAY_THIS_VARIANT,
      "path tracing: one ray per bounce, next-event estimation, Russian roulette",
      {{"max-depth", 5, -1, 1000, true,
        "most bounces a path takes (0: emitters only, 1: direct light; -1: no limit)"},
