@@ -138,6 +138,30 @@ const bool registered = registerIntegrator(
      {},
      [](const ParamValues&, const Scene&) { return std::make_unique<DiffuseBounceIntegrator>(); }});
 
+// Steady-state rate of the renderer: one warm-up pass (first touch of the film and tile memory),
+// then the best of `repeats` timed passes, `spp` samples per pixel each.
+double rendererSeconds(const Scene& scene, const RayTracer& tracer, const std::string& name,
+                       const std::map<std::string, std::string>& params, int width, uint32_t spp,
+                       int repeats, uint64_t* raysPerPass) {
+  const IntegratorInfo& info = findIntegrator(name);
+  const auto integrator = info.create(resolveParams(name, info.params, params), scene);
+  const Camera camera(scene, width, width);
+  RenderSettings settings;
+  settings.width = settings.height = width;
+  settings.samplesPerPixel = spp * (1 + repeats);
+  settings.samplesPerPass = spp;
+  settings.sampler = info.defaultSampler;
+  Renderer renderer(tracer, camera, *integrator, filterFunctions(info.variant), settings);
+  renderer.renderPass();
+  double best = 1e30;
+  for (int i = 0; i < repeats; ++i) {
+    const uint64_t before = renderer.stats().counters.totalRays();
+    best = std::min(best, secondsOf([&] { renderer.renderPass(); }));
+    *raysPerPass = renderer.stats().counters.totalRays() - before;
+  }
+  return best;
+}
+
 int benchRays(const std::string& scenePath, int width, int repeats) {
   const Scene scene = loadScene(scenePath);
   const RayTracer tracer(scene);
@@ -166,32 +190,13 @@ int benchRays(const std::string& scenePath, int width, int repeats) {
       });
     });
   };
-  // Through the renderer, box filter, 1 spp per pass. The first pass is a warm-up (it also
-  // touches the film's and the tiles' memory for the first time); the rate is that of the
-  // following passes, as in a progressive render or the viewer.
-  auto measureRenderer = [&](const std::string& name, uint64_t* raysOut) {
-    const IntegratorInfo& info = findIntegrator(name);
-    const auto integrator = info.create(ParamValues{}, scene);
-    const Camera camera(scene, width, width);
-    RenderSettings settings;
-    settings.width = settings.height = width;
-    settings.samplesPerPixel = 1 + repeats;
-    Renderer renderer(tracer, camera, *integrator, filterFunctions(info.variant), settings);
-    renderer.renderPass();
-    double best = 1e30;
-    for (int i = 0; i < repeats; ++i) {
-      const uint64_t before = renderer.stats().counters.totalRays();
-      best = std::min(best, secondsOf([&] { renderer.renderPass(); }));
-      *raysOut = renderer.stats().counters.totalRays() - before;
-    }
-    return best;
-  };
-
   const double rawPrimary = measureRaw(rays.primary), apiPrimary = measureApi(rays.primary);
   const double rawBounce = measureRaw(rays.incoherent), apiBounce = measureApi(rays.incoherent);
   uint64_t rendererPrimaryRays = 0, rendererBounceRays = 0;
-  const double rendererPrimary = measureRenderer("stage1@ref", &rendererPrimaryRays);
-  const double rendererBounce = measureRenderer("bench-bounce", &rendererBounceRays);
+  const double rendererPrimary =
+      rendererSeconds(scene, tracer, "stage1@ref", {}, width, 1, repeats, &rendererPrimaryRays);
+  const double rendererBounce =
+      rendererSeconds(scene, tracer, "bench-bounce", {}, width, 1, repeats, &rendererBounceRays);
 
   std::printf("%-40s %12s %10s\n", "ray set / path", "Mrays/s", "vs raw");
   auto row = [](const char* name, double mrays, double rawMrays) {
@@ -212,30 +217,6 @@ int benchRays(const std::string& scenePath, int width, int repeats) {
   row("camera + bounce: raw Embree (same mix)", rawMix, rawMix);
   row("camera + bounce: renderer (bench-bounce)", rate(rendererBounceRays, rendererBounce), rawMix);
   return 0;
-}
-
-// Steady-state rate of the renderer: one warm-up pass (first touch of the film and tile memory),
-// then the best of `repeats` timed passes, `spp` samples per pixel each.
-double rendererSeconds(const Scene& scene, const RayTracer& tracer, const std::string& name,
-                       const std::map<std::string, std::string>& params, int width, uint32_t spp,
-                       int repeats, uint64_t* raysPerPass) {
-  const IntegratorInfo& info = findIntegrator(name);
-  const auto integrator = info.create(resolveParams(name, info.params, params), scene);
-  const Camera camera(scene, width, width);
-  RenderSettings settings;
-  settings.width = settings.height = width;
-  settings.samplesPerPixel = spp * (1 + repeats);
-  settings.samplesPerPass = spp;
-  settings.sampler = info.defaultSampler;
-  Renderer renderer(tracer, camera, *integrator, filterFunctions(info.variant), settings);
-  renderer.renderPass();
-  double best = 1e30;
-  for (int i = 0; i < repeats; ++i) {
-    const uint64_t before = renderer.stats().counters.totalRays();
-    best = std::min(best, secondsOf([&] { renderer.renderPass(); }));
-    *raysPerPass = renderer.stats().counters.totalRays() - before;
-  }
-  return best;
 }
 
 // Every ray one pass of the stage traces, recorded from a single-threaded render.
