@@ -12,5 +12,6 @@ struct Command {
 };
 
 Command addRenderCommand(CLI::App& app);
+Command addViewCommand(CLI::App& app);  // only when built with the viewer (PATHWAY_HAS_VIEWER)
 
 }  // namespace pathway

@@ -10,7 +10,10 @@
 int main(int argc, char** argv) {
   CLI::App app{"Pathway: from pixel filtering to path tracing, one stage at a time."};
   app.require_subcommand(1);
-  const std::vector<pathway::Command> commands = {pathway::addRenderCommand(app)};
+  std::vector<pathway::Command> commands = {pathway::addRenderCommand(app)};
+#ifdef PATHWAY_HAS_VIEWER
+  commands.push_back(pathway::addViewCommand(app));
+#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -1,0 +1,86 @@
+// `pathway view [scene] [options]`: the interactive viewer (framework/viewer/), or the same viewer
+// drawn offscreen with --headless for screenshots and benchmarks. Built only with the viewer.
+#ifdef PATHWAY_HAS_VIEWER
+#include <memory>
+
+#include "app/commands.h"
+#include "viewer/viewer_app.h"
+
+namespace pathway {
+
+Command addViewCommand(CLI::App& app) {
+  auto options = std::make_shared<ViewerOptions>();
+  options->scene = PATHWAY_DEFAULT_SCENE;
+  CLI::App* view = app.add_subcommand("view", "Open the interactive viewer");
+  view->footer(
+      "Examples:\n"
+      "  pathway view                                    Cornell box, stage 1 (yours)\n"
+      "  pathway view scenes/cornell_box.gltf -i stage2 -p ao-rays=4\n"
+      "  pathway view -i stage5@ref -p nee=1 --split stage5@ref --split-param nee=0 --balance "
+      "rays\n"
+      "  pathway view --headless --frames 60 --screenshot ui.png   (no display needed)\n"
+      "  pathway view --benchmark                        progressive fps, time to first image\n"
+      "Press H in the viewer for the keys and mouse.");
+  view->add_option("scene", options->scene, "glTF 2.0 scene (.gltf or .glb)")
+      ->capture_default_str();
+  view->add_option("-i,--integrator", options->integrator,
+                   "Integrator by name: stageN is yours, stageN@ref the reference")
+      ->capture_default_str();
+  view->add_option("-p,--param", options->params, "Integrator parameter name=value (repeatable)");
+  view->add_option("--split", options->splitIntegrator,
+                   "Split view: this integrator in the right pane");
+  view->add_option("--split-param", options->splitParams,
+                   "Parameter name=value of the right pane's integrator (repeatable)");
+  view->add_option("--balance", options->balance,
+                   "Split view: 'time' (equal render time) or 'rays' (equal ray count)")
+      ->capture_default_str();
+  view->add_option("--width", options->width, "Render width in pixels (default: follow the window)")
+      ->check(CLI::Range(1, 16384));
+  view->add_option("--height", options->height,
+                   "Render height in pixels (default: follow the window)")
+      ->check(CLI::Range(1, 16384));
+  view->add_option("--window-width", options->windowWidth, "Window width")
+      ->check(CLI::Range(400, 16384))
+      ->capture_default_str();
+  view->add_option("--window-height", options->windowHeight, "Window height")
+      ->check(CLI::Range(300, 16384))
+      ->capture_default_str();
+  view->add_option("--spp", options->spp, "Samples per pixel at which rendering stops")
+      ->check(CLI::Range(1u, 1u << 20))
+      ->capture_default_str();
+  view->add_option("--spp-per-pass", options->samplesPerPass,
+                   "Samples per pixel added between two displayed images")
+      ->check(CLI::Range(1u, 1u << 20))
+      ->capture_default_str();
+  view->add_option("--sampler", options->sampler,
+                   "independent, stratified or sobol (default: the stage's usual one)");
+  view->add_option("--seed", options->seed, "Random seed")->capture_default_str();
+  view->add_option("--filter", options->filter, "Pixel filter: box, tent, mitchell, gaussian")
+      ->capture_default_str();
+  view->add_option("--filter-radius", options->filterRadius,
+                   "Filter support in pixels (0: the filter's natural radius)")
+      ->check(CLI::Range(0.0f, 6.0f));
+  view->add_option("--exposure", options->exposure, "Display exposure in stops")
+      ->check(CLI::Range(-10.0f, 10.0f))
+      ->capture_default_str();
+  view->add_option("--display", options->display, "color, variance or rays (rays per sample)")
+      ->capture_default_str();
+  view->add_flag("--show-help", options->showHelp, "Open with the keys-and-mouse help shown");
+  view->add_flag("--headless", options->headless,
+                 "Draw the viewer offscreen (OSMesa): no display needed");
+  view->add_option("--frames", options->frames,
+                   "Draw this many frames, then exit (headless default: 30)")
+      ->check(CLI::Range(1, 1000000));
+  view->add_option("--screenshot", options->screenshot,
+                   "After the last frame, write the whole window (panel included) to this PNG");
+  view->add_flag("--benchmark", options->benchmark,
+                 "Measure progressive frames per second and time to first image (headless)");
+  view->add_option("--benchmark-seconds", options->benchmarkSeconds,
+                   "How long each benchmark measurement runs")
+      ->check(CLI::Range(0.2, 600.0))
+      ->capture_default_str();
+  return {view, [options] { return runViewer(*options); }};
+}
+
+}  // namespace pathway
+#endif  // PATHWAY_HAS_VIEWER

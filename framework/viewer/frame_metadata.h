@@ -1,0 +1,12 @@
+// The EXR metadata of an image saved from the viewer: the same "pathway:" keys as
+// `pathway render` writes, plus the viewer's camera, so a saved image says how it was made.
+#pragma once
+
+#include "io/image_io.h"
+#include "viewer/render_worker.h"
+
+namespace pathway {
+
+ImageMetadata frameMetadata(const LaneFrame& frame);
+
+}  // namespace pathway

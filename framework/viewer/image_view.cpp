@@ -1,0 +1,207 @@
+#include "viewer/image_view.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "render/integrator_registry.h"
+
+namespace pathway {
+namespace {
+
+const ImU32 kTextColor = IM_COL32(235, 235, 235, 255);
+const ImU32 kBoxColor = IM_COL32(0, 0, 0, 170);
+const ImU32 kTodoBox = IM_COL32(150, 75, 0, 230);
+const ImU32 kErrorBox = IM_COL32(150, 20, 20, 235);
+
+// Lines of text on a translucent box, wrapped at `maxWidth`; `anchor` is the box's top-left, or
+// its bottom-left when `growUp`. Returns the box's height.
+float textBox(ImDrawList* draw, ImVec2 anchor, const std::vector<std::string>& lines, ImU32 box,
+              float maxWidth, bool growUp = false) {
+  if (lines.empty()) return 0.0f;
+  const float pad = 5.0f, wrap = std::max(maxWidth - 2 * pad, 50.0f);
+  float width = 0.0f, height = 0.0f;
+  std::vector<float> heights;
+  for (const std::string& line : lines) {
+    const ImVec2 size = ImGui::CalcTextSize(line.c_str(), nullptr, false, wrap);
+    width = std::max(width, size.x);
+    heights.push_back(size.y);
+    height += size.y;
+  }
+  height += 2 * pad;
+  const ImVec2 min(anchor.x, growUp ? anchor.y - height : anchor.y);
+  draw->AddRectFilled(min, ImVec2(min.x + width + 2 * pad, min.y + height), box, 4.0f);
+  float y = min.y + pad;
+  for (size_t i = 0; i < lines.size(); ++i) {
+    draw->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(min.x + pad, y), kTextColor,
+                  lines[i].c_str(), nullptr, wrap);
+    y += heights[i];
+  }
+  return height;
+}
+
+std::string describe(const LaneFrame& frame) {
+  std::string text = frame.integrator;
+  for (const IntegratorInfo* info : allIntegrators())
+    if (info->name == frame.integrator)
+      text += info->variant == Variant::Student ? "  (yours)" : "  (reference)";
+  for (const auto& [name, value] : frame.params) {
+    char number[32];
+    std::snprintf(number, sizeof number, "%g", value);
+    text += "  " + name + "=" + number;
+  }
+  return text;
+}
+
+std::vector<std::string> counters(const LaneFrame& frame, bool detailed) {
+  const RenderStats& s = frame.stats;
+  const RayCounters& c = s.counters;
+  char line[160];
+  std::snprintf(line, sizeof line, "%u/%u spp   %.2f s   %.1f M rays/s", s.samplesPerPixel,
+                frame.settings.samplesPerPixel, s.seconds,
+                s.seconds > 0 ? c.totalRays() / s.seconds * 1e-6 : 0.0);
+  std::vector<std::string> lines = {describe(frame), line};
+  if (detailed) {
+    std::snprintf(line, sizeof line, "rays: %.2f M primary, %.2f M secondary, %.2f M shadow",
+                  c.primary * 1e-6, c.secondary * 1e-6, c.shadow * 1e-6);
+    lines.push_back(line);
+  }
+  if (c.invalidSamples > 0)
+    lines.push_back(std::to_string(c.invalidSamples) + " non-finite samples dropped");
+  return lines;
+}
+
+void legend(ImDrawList* draw, const Pane& pane, const PaneInfo& info) {
+  const char* title = info.mode == DisplayMode::Variance ? "variance of the pixel estimate"
+                                                         : "rays per camera sample";
+  const float barWidth = std::max(180.0f, ImGui::CalcTextSize(title).x);
+  const float barHeight = 12.0f, margin = 10.0f;
+  const ImVec2 min(pane.max.x - barWidth - margin, pane.max.y - barHeight - margin - 20.0f);
+  draw->AddRectFilled(ImVec2(min.x - 6, min.y - 22), ImVec2(pane.max.x - 4, pane.max.y - 4),
+                      kBoxColor, 4.0f);
+  const int steps = 32;
+  for (int i = 0; i < steps; ++i) {
+    uint8_t a[3], b[3];
+    falseColor(static_cast<float>(i) / steps, a);
+    falseColor(static_cast<float>(i + 1) / steps, b);
+    const float x0 = min.x + barWidth * i / steps, x1 = min.x + barWidth * (i + 1) / steps;
+    const ImU32 ca = IM_COL32(a[0], a[1], a[2], 255), cb = IM_COL32(b[0], b[1], b[2], 255);
+    draw->AddRectFilledMultiColor(ImVec2(x0, min.y), ImVec2(x1, min.y + barHeight), ca, cb, cb, ca);
+  }
+  draw->AddText(ImVec2(min.x, min.y - 18), kTextColor, title);
+  char top[32];
+  std::snprintf(top, sizeof top, "%.3g", info.scaleMax);
+  draw->AddText(ImVec2(min.x, min.y + barHeight + 2), kTextColor, "0");
+  draw->AddText(ImVec2(min.x + barWidth - ImGui::CalcTextSize(top).x, min.y + barHeight + 2),
+                kTextColor, top);
+}
+
+void drawPaneContent(ImDrawList* draw, const Pane& pane, const GlTexture& texture,
+                     const PaneInfo& info) {
+  const LaneFrame* frame = info.frame;
+  if (texture.width() > 0 && frame) {
+    // Fit the image into the pane, keeping its aspect ratio, centred.
+    const float scale = std::min(pane.width() / texture.width(), pane.height() / texture.height());
+    const ImVec2 size(texture.width() * scale, texture.height() * scale);
+    const ImVec2 min(pane.min.x + 0.5f * (pane.width() - size.x),
+                     pane.min.y + 0.5f * (pane.height() - size.y));
+    draw->AddImage(texture.imguiId(), min, ImVec2(min.x + size.x, min.y + size.y));
+  }
+  const float margin = 8.0f, width = pane.width() - 2 * margin;
+  const ImVec2 corner(pane.min.x + margin, pane.min.y + margin);
+  if (!frame) {
+    textBox(draw, corner, {"rendering the first image..."}, kBoxColor, width);
+    return;
+  }
+  float y = corner.y;
+  if (info.side)
+    y += textBox(draw, corner, {std::string(info.side) + " pane"}, kBoxColor, width) + 4;
+  if (!frame->error.empty()) {
+    textBox(draw, ImVec2(corner.x, y), {frame->integrator + " cannot render:", frame->error},
+            kErrorBox, width);
+    return;
+  }
+  textBox(draw, ImVec2(corner.x, y), counters(*frame, info.side != nullptr), kBoxColor, width);
+
+  // Unfinished stage code: impossible to miss, with the file and line to open.
+  std::vector<std::string> todos;
+  for (const TodoRecord& todo : frame->todos) {
+    if (todos.size() == 4) {
+      todos.push_back("... and " + std::to_string(frame->todos.size() - 4) +
+                      " more (see the panel)");
+      break;
+    }
+    todos.push_back("TODO not done: " + todo.file + ":" + std::to_string(todo.line) + "  " +
+                    todo.task);
+  }
+  const float legendRoom = info.mode == DisplayMode::Color ? 0.0f : 60.0f;
+  textBox(draw, ImVec2(corner.x, pane.max.y - margin - legendRoom), todos, kTodoBox, width, true);
+  if (info.mode != DisplayMode::Color) legend(draw, pane, info);
+}
+
+}  // namespace
+
+ImageLayout layoutPanes(const ViewerState& state, float panelWidth) {
+  const ImGuiIO& io = ImGui::GetIO();
+  ImageLayout layout;
+  layout.count = state.split ? 2 : 1;
+  const float gap = state.split ? 4.0f : 0.0f;
+  const float left = std::min(panelWidth, io.DisplaySize.x - 16.0f);
+  const float paneWidth = std::max(8.0f, (io.DisplaySize.x - left - gap) / layout.count);
+  for (int i = 0; i < layout.count; ++i) {
+    const float x = left + i * (paneWidth + gap);
+    layout.panes[i] = {ImVec2(x, 0.0f), ImVec2(x + paneWidth, io.DisplaySize.y)};
+  }
+  if (state.fixedWidth > 0 && state.fixedHeight > 0) {
+    layout.renderWidth = state.fixedWidth;
+    layout.renderHeight = state.fixedHeight;
+  } else {
+    const float divisor = static_cast<float>(std::max(state.resolutionDivisor, 1));
+    layout.renderWidth =
+        std::max(8, static_cast<int>(paneWidth * io.DisplayFramebufferScale.x / divisor));
+    layout.renderHeight =
+        std::max(8, static_cast<int>(io.DisplaySize.y * io.DisplayFramebufferScale.y / divisor));
+  }
+  return layout;
+}
+
+void drawPane(const Pane& pane, const GlTexture& texture, const PaneInfo& info) {
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  draw->PushClipRect(pane.min, pane.max);  // a pane's text never spills into the other pane
+  drawPaneContent(draw, pane, texture, info);
+  draw->PopClipRect();
+}
+
+bool CameraMouse::update(const ImageLayout& layout, OrbitCamera& camera) {
+  const ImGuiIO& io = ImGui::GetIO();
+  bool overImage = false;
+  for (int i = 0; i < layout.count; ++i)
+    if (layout.panes[i].contains(io.MousePos)) {
+      overImage = !io.WantCaptureMouse;
+      paneHeight_ = layout.panes[i].height();
+    }
+  for (int button = 0; button < 3; ++button) {
+    if (ImGui::IsMouseClicked(button) && overImage) dragging_[button] = true;
+    if (!ImGui::IsMouseDown(button)) dragging_[button] = false;
+  }
+  bool moved = false;
+  const ImVec2 d = io.MouseDelta;
+  if (d.x != 0.0f || d.y != 0.0f) {
+    if (dragging_[0]) {
+      camera.orbit(d.x, d.y);
+      moved = true;
+    } else if (dragging_[1] || dragging_[2]) {
+      camera.pan(d.x, d.y, paneHeight_);
+      moved = true;
+    }
+  }
+  if (overImage && io.MouseWheel != 0.0f) {
+    camera.zoom(io.MouseWheel);
+    moved = true;
+  }
+  return moved;
+}
+
+}  // namespace pathway

@@ -1,0 +1,285 @@
+#include "viewer/panel.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "render/integrator_registry.h"
+
+namespace pathway {
+namespace {
+
+const ImVec4 kErrorColor(1.0f, 0.35f, 0.35f, 1.0f);
+const ImVec4 kGoodColor(0.45f, 0.9f, 0.45f, 1.0f);
+
+void tooltip(const std::string& text) {
+  if (!text.empty() && ImGui::IsItemHovered()) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+    ImGui::TextUnformatted(text.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
+}
+
+std::string integratorLabel(const IntegratorInfo& info) {
+  return info.name + (info.variant == Variant::Student ? "   (yours)" : "   (reference)");
+}
+
+const IntegratorInfo* findInfo(const std::string& name) {
+  for (const IntegratorInfo* info : allIntegrators())
+    if (info->name == name) return info;
+  return nullptr;
+}
+
+// One slider (or checkbox, for 0/1 switches) per declared parameter, clamped to its range.
+void parameterWidgets(ViewerState& state, int lane, const IntegratorInfo& info) {
+  if (info.params.empty()) ImGui::TextDisabled("(no parameters)");
+  for (const ParamSpec& spec : info.params) {
+    const double value = paramValue(state, lane, info, spec);
+    const char* name = spec.name.c_str();
+    const ImGuiSliderFlags clamp = ImGuiSliderFlags_AlwaysClamp;
+    bool changed = false;
+    double result = value;
+    if (spec.isInteger && spec.minValue == 0.0 && spec.maxValue == 1.0) {
+      bool on = value != 0.0;
+      changed = ImGui::Checkbox(name, &on);
+      result = on ? 1.0 : 0.0;
+    } else if (spec.isInteger) {
+      // 64-bit: some limits (e.g. a ray budget) go far beyond int.
+      long long v = static_cast<long long>(value);
+      const long long lo = static_cast<long long>(spec.minValue);
+      const long long hi = static_cast<long long>(spec.maxValue);
+      if (hi - lo <= 64)
+        changed = ImGui::SliderScalar(name, ImGuiDataType_S64, &v, &lo, &hi, "%lld", clamp);
+      else if (lo > 0)  // counts over decades (rays per hit, budgets): a log scale
+        changed = ImGui::SliderScalar(name, ImGuiDataType_S64, &v, &lo, &hi, "%lld",
+                                      clamp | ImGuiSliderFlags_Logarithmic);
+      else
+        changed = ImGui::DragScalar(name, ImGuiDataType_S64, &v, 0.2f, &lo, &hi, "%lld", clamp);
+      result = static_cast<double>(v);
+    } else {
+      double v = value;
+      ImGuiSliderFlags flags = clamp;
+      // Ranges over decades (distances, strengths) are easier to set on a log scale.
+      if (spec.minValue > 0.0 && spec.maxValue / spec.minValue >= 100.0)
+        flags |= ImGuiSliderFlags_Logarithmic;
+      changed = ImGui::SliderScalar(name, ImGuiDataType_Double, &v, &spec.minValue, &spec.maxValue,
+                                    "%.4g", flags);
+      result = v;
+    }
+    tooltip(spec.help + "\n(default " + formatParamValue(spec, spec.defaultValue) + ", range [" +
+            formatParamValue(spec, spec.minValue) + ", " + formatParamValue(spec, spec.maxValue) +
+            "]; Ctrl+click to type a value)");
+    if (changed) setParamValue(state, lane, info, spec, result);
+  }
+}
+
+void integratorWidgets(ViewerState& state, int lane) {
+  ImGui::PushID(lane);
+  const IntegratorInfo* current = findInfo(state.integrator[lane]);
+  const std::string preview = current ? integratorLabel(*current) : state.integrator[lane];
+  if (ImGui::BeginCombo("integrator", preview.c_str())) {
+    int lastStage = 0;
+    for (const IntegratorInfo* info : allIntegrators()) {
+      if (info->stage != lastStage && lastStage != 0) ImGui::Separator();
+      lastStage = info->stage;
+      const bool selected = current == info;
+      if (ImGui::Selectable(integratorLabel(*info).c_str(), selected))
+        selectIntegrator(state, lane, info->name);
+      tooltip(info->summary);
+    }
+    ImGui::EndCombo();
+  }
+  if (current) {
+    // The quick switch between the student's version and the reference of the same stage.
+    bool isReference = current->variant == Variant::Reference;
+    const std::string other =
+        variantIntegratorName("stage" + std::to_string(current->stage),
+                              isReference ? Variant::Student : Variant::Reference);
+    ImGui::BeginDisabled(!findInfo(other));
+    if (ImGui::RadioButton("yours", !isReference) && isReference) toggleVariant(state, lane);
+    ImGui::SameLine();
+    if (ImGui::RadioButton("reference", isReference) && !isReference) toggleVariant(state, lane);
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::TextDisabled(lane == 0 ? "(key T)" : "(Shift+T)");
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("%s", current->summary.c_str());
+    ImGui::PopTextWrapPos();
+    parameterWidgets(state, lane, *current);
+  }
+  ImGui::PopID();
+}
+
+void samplingWidgets(ViewerState& state, const PanelStatus& status) {
+  const std::vector<std::string> filters = filterTypeNames();
+  int filter = static_cast<int>(state.filter);
+  if (ImGui::BeginCombo("filter", filters[filter].c_str())) {
+    for (size_t i = 0; i < filters.size(); ++i)
+      if (ImGui::Selectable(filters[i].c_str(), static_cast<int>(i) == filter))
+        state.filter = parseFilterType(filters[i]);
+    ImGui::EndCombo();
+  }
+  ImGui::SliderFloat("filter radius", &state.filterRadius, 0.0f, 6.0f,
+                     state.filterRadius > 0.0f ? "%.2f px" : "natural",
+                     ImGuiSliderFlags_AlwaysClamp);
+  tooltip(
+      "Filter support in pixels; 0 uses the filter's natural radius (box 0.5, tent 1, "
+      "Mitchell 2, Gaussian 1.5).");
+  const std::vector<std::string> samplers = samplerTypeNames();
+  const int sampler = static_cast<int>(state.sampler);
+  if (ImGui::BeginCombo("sampler", samplers[sampler].c_str())) {
+    for (size_t i = 0; i < samplers.size(); ++i)
+      if (ImGui::Selectable(samplers[i].c_str(), static_cast<int>(i) == sampler))
+        state.sampler = parseSamplerType(samplers[i]);
+    ImGui::EndCombo();
+  }
+  ImGui::InputInt("seed", &state.seed);
+  state.seed = std::max(state.seed, 0);
+  ImGui::DragInt("spp target", &state.sppTarget, 8.0f, 1, 1 << 20, "%d",
+                 ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
+  tooltip("Samples per pixel at which the render stops.");
+  ImGui::SliderInt("spp per pass", &state.samplesPerPass, 1, 64, "%d",
+                   ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
+  tooltip("Samples added to every pixel before the image is shown again.");
+  if (!status.fixedSize) {
+    const char* resolutions[] = {"full", "1/2", "1/4"};
+    int index = state.resolutionDivisor == 4 ? 2 : state.resolutionDivisor == 2 ? 1 : 0;
+    if (ImGui::Combo("resolution", &index, resolutions, 3)) state.resolutionDivisor = 1 << index;
+    tooltip("Render fewer pixels than the pane shows, for speed.");
+  }
+}
+
+void displayWidgets(ViewerState& state, const PanelStatus& status) {
+  int mode = static_cast<int>(state.display);
+  ImGui::RadioButton("colour", &mode, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("variance", &mode, 1);
+  ImGui::SameLine();
+  ImGui::RadioButton("rays/sample", &mode, 2);
+  state.display = static_cast<DisplayMode>(mode);
+  ImGui::SliderFloat("exposure", &state.exposure, -10.0f, 10.0f, "%+.1f stops",
+                     ImGuiSliderFlags_AlwaysClamp);
+  if (state.display != DisplayMode::Color) {
+    const char* what = state.display == DisplayMode::Variance ? "variance" : "rays per sample";
+    ImGui::PushTextWrapPos(0.0f);
+    if (state.split)
+      ImGui::TextDisabled("%s at the top of the scale (99th percentile): %.4g | %.4g", what,
+                          status.scaleMax[0], status.scaleMax[1]);
+    else
+      ImGui::TextDisabled("%s at the top of the scale (99th percentile): %.4g", what,
+                          status.scaleMax[0]);
+    ImGui::PopTextWrapPos();
+  }
+}
+
+void splitWidgets(ViewerState& state) {
+  ImGui::Checkbox("split view (key V)", &state.split);
+  if (!state.split) return;
+  int balance = static_cast<int>(state.balance);
+  ImGui::RadioButton("equal time", &balance, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("equal ray count", &balance, 1);
+  state.balance = static_cast<Balance>(balance);
+  if (state.balance == Balance::EqualTime) {
+    ImGui::SliderFloat("budget", &state.budgetSeconds, 0.0f, 120.0f,
+                       state.budgetSeconds > 0 ? "%.1f s" : "none", ImGuiSliderFlags_AlwaysClamp);
+  } else {
+    ImGui::SliderFloat("budget", &state.budgetMegaRays, 0.0f, 10000.0f,
+                       state.budgetMegaRays > 0 ? "%.0f M rays" : "none",
+                       ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
+  }
+  tooltip(
+      "Each pane stops here (0: at the spp target). The pane that is behind always gets the "
+      "next pass, so both stay level within one pass.");
+}
+
+}  // namespace
+
+PanelAction drawPanel(ViewerState& state, PanelText& text, const PanelStatus& status) {
+  PanelAction action = PanelAction::None;
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(0, 0));
+  ImGui::SetNextWindowSize(ImVec2(kPanelWidth, io.DisplaySize.y));
+  ImGui::Begin("Pathway", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus);
+  ImGui::PushItemWidth(-130.0f);
+  ImGui::TextDisabled("H or F1: keys and mouse");
+  todoWidgets(state, status);
+
+  if (ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ImGui::SetNextItemWidth(-60.0f);
+    const bool enter =
+        ImGui::InputText("##scene", &text.sceneInput, ImGuiInputTextFlags_EnterReturnsTrue);
+    tooltip("A glTF 2.0 file (.gltf or .glb)");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(status.sceneLoading);
+    if (ImGui::Button("Open") || enter) action = PanelAction::OpenScene;
+    ImGui::EndDisabled();
+    if (status.sceneLoading) ImGui::TextDisabled("loading...");
+    if (!text.sceneMessage.empty()) {
+      ImGui::PushTextWrapPos(0.0f);
+      if (text.sceneFailed)
+        ImGui::TextColored(kErrorColor, "%s", text.sceneMessage.c_str());
+      else
+        ImGui::TextDisabled("%s", text.sceneMessage.c_str());
+      ImGui::PopTextWrapPos();
+    }
+    if (ImGui::Button("Reset camera (R)")) action = PanelAction::ResetCamera;
+  }
+
+  if (ImGui::CollapsingHeader("Integrator", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (state.split && ImGui::BeginTabBar("panes")) {
+      if (ImGui::BeginTabItem("left pane")) {
+        integratorWidgets(state, 0);
+        ImGui::EndTabItem();
+      }
+      if (ImGui::BeginTabItem("right pane")) {
+        integratorWidgets(state, 1);
+        ImGui::EndTabItem();
+      }
+      ImGui::EndTabBar();
+    } else {
+      integratorWidgets(state, 0);
+    }
+  }
+  if (ImGui::CollapsingHeader("Counters", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ImGui::Checkbox("paused (Space)", &state.paused);
+    counterWidgets(state, status);
+  }
+  if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen))
+    displayWidgets(state, status);
+  if (ImGui::CollapsingHeader("Sampling", ImGuiTreeNodeFlags_DefaultOpen))
+    samplingWidgets(state, status);
+  if (ImGui::CollapsingHeader("Split view", ImGuiTreeNodeFlags_DefaultOpen)) splitWidgets(state);
+  if (ImGui::CollapsingHeader("Save", ImGuiTreeNodeFlags_DefaultOpen)) {
+    ImGui::InputText("file name", &text.savePrefix);
+    tooltip("Without extension; the split view adds -left / -right.");
+    if (ImGui::Button("Save EXR")) action = PanelAction::SaveExr;
+    tooltip("Linear colour, variance and filter weight, with settings and counters as metadata");
+    ImGui::SameLine();
+    if (ImGui::Button("Save PNG")) action = PanelAction::SavePng;
+    tooltip("sRGB colour with the current exposure");
+    ImGui::SameLine();
+    if (ImGui::Button("Screenshot")) action = PanelAction::Screenshot;
+    tooltip("The whole window, panel included (F12)");
+    if (!text.saveMessage.empty()) {
+      ImGui::PushTextWrapPos(0.0f);
+      ImGui::TextColored(text.saveFailed ? kErrorColor : kGoodColor, "%s",
+                         text.saveMessage.c_str());
+      ImGui::PopTextWrapPos();
+    }
+  }
+  ImGui::PopItemWidth();
+  ImGui::End();
+  return action;
+}
+
+}  // namespace pathway

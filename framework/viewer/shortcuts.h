@@ -1,0 +1,18 @@
+// Keyboard shortcuts: one table, read by the handler and by the help overlay (H or F1).
+#pragma once
+
+#include "viewer/viewer_state.h"
+
+namespace pathway {
+
+struct ShortcutEffects {
+  bool resetCamera = false;
+  bool screenshot = false;
+};
+
+// Applies the keys pressed this frame (unless a text field has the keyboard).
+ShortcutEffects handleShortcuts(ViewerState& state);
+// The help overlay, centred over the whole window; closes with H, F1, Esc or its button.
+void drawHelp(ViewerState& state);
+
+}  // namespace pathway

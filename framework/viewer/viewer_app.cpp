@@ -1,0 +1,244 @@
+#include "viewer/viewer_app.h"
+
+#include <imgui.h>
+
+#include <chrono>
+#include <filesystem>
+
+#include "core/error.h"
+#include "viewer/frame_metadata.h"
+#include "viewer/shortcuts.h"
+
+namespace pathway {
+namespace {
+
+double now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+void setUpImGui() {
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // the layout is fixed; no imgui.ini in the user's folder
+  ImGui::StyleColorsDark();
+  ImGuiStyle& style = ImGui::GetStyle();
+  style.Colors[ImGuiCol_WindowBg].w = 1.0f;  // an opaque panel reads better over renders
+  style.WindowRounding = 0.0f;
+  style.ItemSpacing.y = 3.0f;  // more of the panel fits without scrolling
+  style.FramePadding.y = 2.0f;
+  // A proportional font reads better than ImGui's built-in bitmap font, when the system has it.
+  const char* font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+  if (std::filesystem::exists(font)) io.Fonts->AddFontFromFileTTF(font, 15.0f);
+}
+
+}  // namespace
+
+Viewer::Viewer(std::unique_ptr<Platform> platform, ViewerState state,
+               std::shared_ptr<const LoadedScene> scene)
+    : platform_(std::move(platform)), state_(std::move(state)), scene_(std::move(scene)) {
+  setUpImGui();
+  try {
+    platform_->initImGui();
+  } catch (...) {
+    ImGui::DestroyContext();
+    throw;
+  }
+  for (auto& texture : textures_) texture = std::make_unique<GlTexture>(platform_->gl());
+  if (scene_) {
+    camera_ = OrbitCamera(scene_->scene);
+    text_.sceneInput = scene_->scene.sourcePath;
+  }
+  Platform* wakePlatform = platform_.get();
+  worker_ = std::make_unique<RenderWorker>([wakePlatform] { wakePlatform->wake(); });
+  fpsWindowStart_ = now();
+}
+
+Viewer::~Viewer() {
+  worker_.reset();  // no more wake-ups, no more frames
+  for (auto& texture : textures_) texture.reset();
+  platform_->shutdownImGui();
+  ImGui::DestroyContext();
+}
+
+void Viewer::pollSceneLoad() {
+  if (!loading_.valid() || loading_.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+    return;
+  try {
+    scene_ = loading_.get();
+    camera_ = OrbitCamera(scene_->scene);
+    text_.sceneFailed = false;
+    text_.sceneMessage = "loaded " + std::to_string(scene_->scene.triangleCount()) + " triangles";
+    for (const std::string& warning : scene_->scene.warnings) text_.sceneMessage += "\n" + warning;
+  } catch (const std::exception& error) {  // a bad file is reported, never fatal
+    text_.sceneFailed = true;
+    text_.sceneMessage = error.what();
+  }
+}
+
+void Viewer::submitIfChanged(const ImageLayout& layout) {
+  if (!scene_) return;
+  WorkerJob job = makeJob(state_, scene_, camera_.pose(), layout.renderWidth, layout.renderHeight);
+  if (submitted_ && *submitted_ == job) return;
+  submitted_ = job;
+  jobId_ = worker_->submit(std::move(job));
+}
+
+bool Viewer::panesCurrent() const {
+  for (int lane = 0; lane < (state_.split ? 2 : 1); ++lane) {
+    const auto frame = worker_->frame(lane);
+    if (!frame || frame->job != jobId_) return false;
+  }
+  return jobId_ != 0;
+}
+
+void Viewer::updateTextures() {
+  for (int lane = 0; lane < 2; ++lane) {
+    std::shared_ptr<const LaneFrame> frame = worker_->frame(lane);
+    const bool stale = frame != shown_[lane] || shownMode_[lane] != state_.display ||
+                       shownExposure_[lane] != state_.exposure;
+    if (!frame || !stale) {
+      shown_[lane] = frame;
+      continue;
+    }
+    if (!frame->images.color.pixels.empty()) {
+      const DisplayImage image = makeDisplayImage(*frame, state_.display, state_.exposure);
+      textures_[lane]->upload(image);
+      scaleMax_[lane] = image.scaleMax;
+      if (frame != shown_[lane]) ++imagesShown_;
+    }
+    shown_[lane] = frame;
+    shownMode_[lane] = state_.display;
+    shownExposure_[lane] = state_.exposure;
+  }
+}
+
+void Viewer::saveImages(const std::string& extension) {
+  text_.saveFailed = false;
+  text_.saveMessage.clear();
+  try {
+    for (int lane = 0; lane < (state_.split ? 2 : 1); ++lane) {
+      const LaneFrame* frame = shown_[lane].get();
+      if (!frame || frame->images.color.pixels.empty()) throw PathwayError("nothing rendered yet");
+      const std::string path =
+          text_.savePrefix + (state_.split ? (lane == 0 ? "-left" : "-right") : "") + extension;
+      writeImageFile(path, frame->images, frameMetadata(*frame), state_.exposure);
+      text_.saveMessage += (text_.saveMessage.empty() ? "wrote " : ", ") + path;
+    }
+  } catch (const std::exception& error) {
+    text_.saveFailed = true;
+    text_.saveMessage = error.what();
+  }
+}
+
+void Viewer::noteInput() {
+  const ImGuiIO& io = ImGui::GetIO();
+  bool input = io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f || io.MouseWheel != 0.0f ||
+               io.InputQueueCharacters.Size > 0;
+  for (bool down : io.MouseDown) input = input || down;
+  for (bool down : io.KeysDown) input = input || down;
+  if (input) lastInput_ = now();
+}
+
+void Viewer::frame(const std::string& screenshotPath) {
+  platform_->newFrame();
+  ImGui::NewFrame();
+  noteInput();
+  pollSceneLoad();
+
+  const ShortcutEffects keys = handleShortcuts(state_);
+  if (keys.resetCamera) camera_.reset();
+  if (keys.screenshot) pendingScreenshot_ = text_.savePrefix + "_screenshot.png";
+
+  updateTextures();  // before the panel, so panel and panes show the same image
+  PanelStatus status;
+  for (int lane = 0; lane < 2; ++lane) {
+    status.frames[lane] = shown_[lane];
+    status.scaleMax[lane] = scaleMax_[lane];
+  }
+  status.idle = worker_->idle();
+  status.passSeconds = worker_->passSeconds();
+  status.uiFramesPerSecond = fps_;
+  status.sceneLoading = loading_.valid();
+  status.fixedSize = state_.fixedWidth > 0;
+  switch (drawPanel(state_, text_, status)) {
+    case PanelAction::OpenScene: {
+      const std::string path = text_.sceneInput;
+      text_.sceneMessage = "loading " + path + "...";
+      text_.sceneFailed = false;
+      // Loading and building the BVH can take a while for big scenes: not on the UI thread.
+      loading_ = std::async(std::launch::async, [path] { return LoadedScene::load(path); });
+      break;
+    }
+    case PanelAction::SaveExr:
+      saveImages(".exr");
+      break;
+    case PanelAction::SavePng:
+      saveImages(".png");
+      break;
+    case PanelAction::Screenshot:
+      pendingScreenshot_ = text_.savePrefix + "_screenshot.png";
+      break;
+    case PanelAction::ResetCamera:
+      camera_.reset();
+      break;
+    case PanelAction::None:
+      break;
+  }
+  worker_->setPaused(state_.paused);
+
+  const ImageLayout layout = layoutPanes(state_, kPanelWidth);
+  mouse_.update(layout, camera_);
+  submitIfChanged(layout);
+  for (int lane = 0; lane < layout.count; ++lane) {
+    PaneInfo info;
+    info.frame = shown_[lane].get();
+    info.mode = state_.display;
+    info.scaleMax = scaleMax_[lane];
+    if (layout.count == 2) info.side = lane == 0 ? "left" : "right";
+    drawPane(layout.panes[lane], *textures_[lane], info);
+  }
+  drawHelp(state_);
+  ImGui::Render();
+
+  int width = 0, height = 0;
+  platform_->framebufferSize(width, height);
+  const GlFunctions& gl = platform_->gl();
+  gl.Viewport(0, 0, width, height);
+  gl.ClearColor(0.12f, 0.12f, 0.13f, 1.0f);
+  gl.Clear(GL_COLOR_BUFFER_BIT);
+  platform_->renderDrawData(ImGui::GetDrawData());
+
+  // Read back before present(): after a swap the back buffer's content is undefined.
+  const std::string shot = screenshotPath.empty() ? pendingScreenshot_ : screenshotPath;
+  pendingScreenshot_.clear();
+  if (!shot.empty()) {
+    try {
+      writeScreenshot(shot, width, height, readFramebuffer(gl, width, height));
+      text_.saveFailed = false;
+      text_.saveMessage = "wrote " + shot;
+    } catch (const PathwayError& error) {
+      if (!screenshotPath.empty()) throw;  // asked for on the command line: fail the command
+      text_.saveFailed = true;
+      text_.saveMessage = error.what();
+    }
+  }
+  platform_->present();
+
+  ++fpsFrames_;
+  const double t = now();
+  if (t - fpsWindowStart_ >= 1.0) {
+    fps_ = static_cast<float>(fpsFrames_ / (t - fpsWindowStart_));
+    fpsWindowStart_ = t;
+    fpsFrames_ = 0;
+  }
+}
+
+void Viewer::waitForChange(bool asWindow) {
+  // Right after input ImGui needs a few frames (hover, popups, text cursor); otherwise a new
+  // image wakes the loop (the worker calls Platform::wake) and the timeout keeps the counters of
+  // a slow pass moving. Offscreen there is no input to wait for: frames come at display rate.
+  const bool interacting = now() - lastInput_ < 0.5 || (!platform_->interactive() && !asWindow);
+  platform_->waitEvents(interacting ? 1.0 / 60.0 : 0.25);
+}
+
+}  // namespace pathway

@@ -1,0 +1,101 @@
+// `pathway view`: the interactive viewer. One Viewer draws frames (panel + panes) into whatever
+// Platform it is given; the render worker fills the panes in the background.
+#pragma once
+
+#include <cstdint>
+#include <future>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "viewer/gl_display.h"
+#include "viewer/image_view.h"
+#include "viewer/panel.h"
+#include "viewer/platform.h"
+#include "viewer/render_worker.h"
+#include "viewer/viewer_state.h"
+
+namespace pathway {
+
+struct ViewerOptions {
+  std::string scene;
+  std::string integrator = "stage1";
+  std::vector<std::string> params;  // name=value
+  std::string splitIntegrator;      // non-empty: split view with this on the right
+  std::vector<std::string> splitParams;
+  std::string balance = "time";  // split view: "time" or "rays"
+  int windowWidth = 1280, windowHeight = 720;
+  int width = 0, height = 0;  // render size; 0: follow the pane
+  uint32_t spp = 4096;
+  uint32_t samplesPerPass = 1;
+  std::string sampler;  // empty: the stage's usual sampler
+  uint64_t seed = 0;
+  std::string filter = "box";
+  float filterRadius = 0.0f;
+  float exposure = 0.0f;
+  std::string display = "color";
+  bool showHelp = false;  // open with the keys-and-mouse overlay
+  bool headless = false;
+  int frames = 0;          // > 0: draw this many frames, then exit
+  std::string screenshot;  // written after the last frame
+  bool benchmark = false;
+  double benchmarkSeconds = 3.0;
+};
+
+// The state the options describe; throws PathwayError on unknown names or bad parameters.
+ViewerState initialState(const ViewerOptions& options);
+
+class Viewer {
+ public:
+  Viewer(std::unique_ptr<Platform> platform, ViewerState state,
+         std::shared_ptr<const LoadedScene> scene);
+  ~Viewer();
+
+  // Draws one frame; when `screenshotPath` is set, also writes it (throws PathwayError).
+  void frame(const std::string& screenshotPath = "");
+  // Sleeps until something may have changed (input, a new image) or a short timeout. Offscreen
+  // frames come at display rate, unless `asWindow` paces them as a window without input would be.
+  void waitForChange(bool asWindow = false);
+  bool shouldClose() const { return platform_->shouldClose(); }
+  // Every pane shows an image (or an error) of the job now submitted.
+  bool panesCurrent() const;
+  const RenderWorker& worker() const { return *worker_; }
+  uint64_t imagesShown() const { return imagesShown_; }
+
+ private:
+  void pollSceneLoad();
+  void submitIfChanged(const ImageLayout& layout);
+  void updateTextures();
+  void saveImages(const std::string& extension);
+  void noteInput();
+
+  std::unique_ptr<Platform> platform_;
+  ViewerState state_;
+  PanelText text_;
+  std::shared_ptr<const LoadedScene> scene_;
+  std::future<std::shared_ptr<const LoadedScene>> loading_;
+  OrbitCamera camera_;
+  CameraMouse mouse_;
+  std::unique_ptr<GlTexture> textures_[2];
+  std::shared_ptr<const LaneFrame> shown_[2];
+  DisplayMode shownMode_[2] = {DisplayMode::Color, DisplayMode::Color};
+  float shownExposure_[2] = {0.0f, 0.0f};
+  float scaleMax_[2] = {0.0f, 0.0f};
+  std::unique_ptr<RenderWorker> worker_;
+  std::optional<WorkerJob> submitted_;
+  uint64_t jobId_ = 0;
+  uint64_t imagesShown_ = 0;
+  std::string pendingScreenshot_;
+  double lastInput_ = 0.0;
+  double fpsWindowStart_ = 0.0;
+  int fpsFrames_ = 0;
+  float fps_ = 0.0f;
+};
+
+// Runs the viewer as the options say (window or headless, frames, screenshot, benchmark).
+int runViewer(const ViewerOptions& options);
+// Frames per second and time to first image, headless, for the given integrators.
+int runViewerBenchmark(const ViewerOptions& options);
+
+}  // namespace pathway
