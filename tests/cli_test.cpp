@@ -1,34 +1,23 @@
 // End-to-end tests of `pathway render`: bad input gets one clear message, a non-zero exit and no
 // output file; a good render writes its images with the settings and counters in the metadata.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <array>
 #include <cstdio>
 #include <filesystem>
 #include <string>
 
 #include "io/image_io.h"
+#include "run_command.h"
 
 namespace pathway {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Outcome {
-  int exitCode;
-  std::string output;  // stdout and stderr together
-};
+using Outcome = test::CommandOutcome;
 
 Outcome runPathway(const std::string& arguments) {
-  const std::string command = std::string(PATHWAY_BINARY) + " " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return {-1, "popen failed"};
-  std::string output;
-  std::array<char, 4096> buffer;
-  while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+  return test::runCommand(std::string(PATHWAY_BINARY) + " " + arguments);
 }
 
 class Cli : public ::testing::Test {

@@ -1,10 +1,16 @@
 // The renderer: same seed -> bit-identical image for any thread count; exact counters; cancel.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstring>
+#include <future>
+#include <numeric>
+#include <thread>
 
 #include "reference_variant.h"
 #include "render/render_job.h"
+#include "scene/gltf_loader.h"
 #include "test_scenes.h"
 
 namespace pathway {
@@ -108,6 +114,50 @@ TEST(Renderer, CancelledPassLeavesTheFilmUntouched) {
   EXPECT_EQ(0, std::memcmp(before.pixels.data(), after.pixels.data(),
                            before.pixels.size() * sizeof(Color)));
   EXPECT_FALSE(renderer.finished());
+}
+
+TEST(Renderer, CancelStopsAPassOfManySamplesPerPixelPromptly) {
+  PATHWAY_REQUIRE_SOLUTIONS();
+  const Scene scene = test::boxRoom();
+  const RayTracer tracer(scene);
+  const Camera camera(scene, 64, 64);
+  const auto integrator = findIntegrator("stage1@ref").create(ParamValues{}, scene);
+  RenderSettings settings;
+  settings.width = settings.height = 64;
+  settings.samplesPerPixel = settings.samplesPerPass = 1u << 20;  // hours of work in one pass
+  Renderer renderer(tracer, camera, *integrator, filterFunctions(Variant::Reference), settings);
+  std::atomic<bool> cancel{false};
+  auto pass = std::async(std::launch::async, [&] { return renderer.renderPass(&cancel); });
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  const auto start = std::chrono::steady_clock::now();
+  cancel = true;
+  ASSERT_EQ(pass.wait_for(std::chrono::seconds(5)), std::future_status::ready);
+  EXPECT_FALSE(pass.get());
+  // One pixel's samples at most remain after the flag is seen: about 2^20 / 5 M/s = 0.2 s.
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2.0);
+  EXPECT_EQ(renderer.stats().samplesPerPixel, 0u);
+}
+
+TEST(Renderer, CountsTheRaysOfEveryPixel) {
+  PATHWAY_REQUIRE_SOLUTIONS();
+  const Scene scene = loadScene(std::string(PATHWAY_SCENES_DIR) + "/furnace_closed.gltf");
+  const RayTracer tracer(scene);
+  const Camera camera(scene, 40, 30);
+  const IntegratorInfo& info = findIntegrator("stage4@ref");
+  const auto integrator = info.create(
+      resolveParams(info.name, info.params, {{"branching", "2"}, {"depth", "2"}}), scene);
+  RenderSettings settings;
+  settings.width = 40;
+  settings.height = 30;
+  settings.samplesPerPixel = 3;
+  Renderer renderer(tracer, camera, *integrator, filterFunctions(Variant::Reference), settings);
+  renderer.renderAll();
+  const std::vector<uint64_t>& rays = renderer.raysPerPixel();
+  ASSERT_EQ(rays.size(), 40u * 30);
+  EXPECT_EQ(std::accumulate(rays.begin(), rays.end(), uint64_t(0)),
+            renderer.stats().counters.totalRays());
+  // The furnace is closed, so every camera sample casts exactly 1 + 2 + 4 rays.
+  EXPECT_EQ(std::count(rays.begin(), rays.end(), 3u * 7u), static_cast<long>(rays.size()));
 }
 
 }  // namespace

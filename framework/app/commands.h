@@ -7,7 +7,7 @@
 namespace pathway {
 
 struct Command {
-  CLI::App* app;            // the parsed subcommand
+  CLI::App* app;             // the parsed subcommand
   std::function<int()> run;  // runs it; returns the exit status; throws PathwayError on bad input
 };
 

@@ -3,22 +3,16 @@
 #include <sstream>
 
 namespace pathway {
-namespace {
-
-ImageMetadata describe(const Scene& scene, const RenderRequest& request, const IntegratorInfo& info,
-                       const ParamValues& params, const RenderResult& result) {
-  const RenderSettings& s = request.settings;
-  const RayCounters& c = result.stats.counters;
-  std::ostringstream paramText;
-  for (const ParamSpec& spec : info.params)
-    paramText << (paramText.tellp() > 0 ? " " : "") << spec.name << "="
-              << formatParamValue(spec, params.number(spec.name));
-  const double seconds = result.stats.seconds;
+ImageMetadata renderMetadata(const std::string& scenePath, const std::string& integrator,
+                             const std::string& params, const RenderSettings& s,
+                             const RenderStats& stats, size_t unresolvedPixels, size_t todoCount) {
+  const RayCounters& c = stats.counters;
+  const double seconds = stats.seconds;
   return {
-      {"pathway:scene", scene.sourcePath},
-      {"pathway:integrator", info.name},
-      {"pathway:params", paramText.str()},
-      {"pathway:spp", std::to_string(result.stats.samplesPerPixel)},
+      {"pathway:scene", scenePath},
+      {"pathway:integrator", integrator},
+      {"pathway:params", params},
+      {"pathway:spp", std::to_string(stats.samplesPerPixel)},
       {"pathway:sampler", samplerTypeName(s.sampler)},
       {"pathway:seed", std::to_string(s.seed)},
       {"pathway:filter", filterTypeName(s.filter)},
@@ -29,14 +23,12 @@ ImageMetadata describe(const Scene& scene, const RenderRequest& request, const I
       {"pathway:shadowRays", std::to_string(c.shadow)},
       {"pathway:samples", std::to_string(c.samples)},
       {"pathway:invalidSamples", std::to_string(c.invalidSamples)},
-      {"pathway:unresolvedPixels", std::to_string(result.unresolvedPixels)},
+      {"pathway:unresolvedPixels", std::to_string(unresolvedPixels)},
       {"pathway:seconds", std::to_string(seconds)},
       {"pathway:raysPerSecond", std::to_string(seconds > 0 ? c.totalRays() / seconds : 0.0)},
-      {"pathway:todos", std::to_string(result.todos.size())},
+      {"pathway:todos", std::to_string(todoCount)},
   };
 }
-
-}  // namespace
 
 RenderResult runRender(const Scene& scene, const RayTracer& tracer, const RenderRequest& request,
                        const std::function<void(const RenderStats&)>& onPass) {
@@ -56,7 +48,12 @@ RenderResult runRender(const Scene& scene, const RayTracer& tracer, const Render
   result.images.weight = film.weights();
   result.stats = renderer.stats();
   result.todos = todosHit();
-  result.metadata = describe(scene, request, info, params, result);
+  std::ostringstream paramText;
+  for (const ParamSpec& spec : info.params)
+    paramText << (paramText.tellp() > 0 ? " " : "") << spec.name << "="
+              << formatParamValue(spec, params.number(spec.name));
+  result.metadata = renderMetadata(scene.sourcePath, info.name, paramText.str(), request.settings,
+                                   result.stats, result.unresolvedPixels, result.todos.size());
   return result;
 }
 

@@ -32,6 +32,12 @@ struct RenderResult {
   ImageMetadata metadata;         // settings and counters, for the EXR header
 };
 
+// The "pathway:*" metadata every saved render carries: its settings and counters.
+// `params` is the integrator's parameters as "name=value name=value".
+ImageMetadata renderMetadata(const std::string& scenePath, const std::string& integrator,
+                             const std::string& params, const RenderSettings& settings,
+                             const RenderStats& stats, size_t unresolvedPixels, size_t todoCount);
+
 // Validates the request (integrator name, parameters, settings) before any work is done, then
 // renders every pass. `onPass` sees the progress after each pass.
 RenderResult runRender(const Scene& scene, const RayTracer& tracer, const RenderRequest& request,

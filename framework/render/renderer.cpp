@@ -15,6 +15,7 @@ struct Renderer::Tile {
   int mergeClass;      // tiles of one class never overlap, so a class merges in parallel
   FilmBlock block;     // the tile plus the filter's reach
   RayCounters counters;
+  std::vector<uint64_t> rays;  // per pixel of the tile, this pass
 };
 
 namespace {
@@ -47,7 +48,8 @@ Renderer::Renderer(const RayTracer& tracer, const Camera& camera, const Integrat
                                            : naturalFilterRadius(settings.filter),
               filterFunctions),
       sampler_(settings.sampler, settings.samplesPerPixel, settings.seed),
-      film_(settings.width, settings.height) {
+      film_(settings.width, settings.height),
+      raysPerPixel_(static_cast<size_t>(settings_.width) * settings_.height, 0) {
   // A sample drawn in pixel i reaches pixels whose centres lie within the filter radius.
   // Pixel j's centre j + 0.5 is within r of a sample in [i, i+1) only if |j - i| <= ceil(r + 0.5).
   const int margin = static_cast<int>(std::ceil(filter_.radius() + 0.5f));
@@ -64,6 +66,7 @@ Renderer::Renderer(const RayTracer& tracer, const Camera& camera, const Integrat
       tile.x1 = std::min(settings_.width, tile.x0 + size);
       tile.y1 = std::min(settings_.height, tile.y0 + size);
       tile.mergeClass = (tx % 2) + 2 * (ty % 2);
+      tile.rays.resize(static_cast<size_t>(tile.x1 - tile.x0) * (tile.y1 - tile.y0));
       tile.block = FilmBlock(settings_.width, settings_.height, tile.x0 - margin, tile.y0 - margin,
                              size + 2 * margin, size + 2 * margin);
       tiles_.push_back(std::move(tile));
@@ -77,12 +80,17 @@ Renderer::Renderer(const RayTracer& tracer, const Camera& camera, const Integrat
 
 Renderer::~Renderer() = default;
 
-void Renderer::renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount) {
+void Renderer::renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount,
+                          const std::atomic<bool>* cancel) {
   tile.block.clear();
   tile.counters = RayCounters{};
   RenderContext context{tracer_.scene(), tracer_, tile.counters};
+  uint64_t* pixelRays = tile.rays.data();
   for (int y = tile.y0; y < tile.y1; ++y) {
-    for (int x = tile.x0; x < tile.x1; ++x) {
+    for (int x = tile.x0; x < tile.x1; ++x, ++pixelRays) {
+      // Checked per pixel, so even a pass of many samples per pixel stops promptly.
+      if (cancel && cancel->load(std::memory_order_relaxed)) return;
+      const uint64_t raysBefore = tile.counters.totalRays();
       for (uint32_t index = firstSample; index < firstSample + sampleCount; ++index) {
         SampleStream samples(sampler_, x, y, index);
         const Vec2 filmPosition = Vec2(x, y) + samples.next2D();
@@ -94,6 +102,7 @@ void Renderer::renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount
         filterFunctions_.splat(tile.block, filmPosition, radiance, filter_);
         ++tile.counters.samples;
       }
+      *pixelRays = tile.counters.totalRays() - raysBefore;
     }
   }
 }
@@ -107,7 +116,7 @@ bool Renderer::renderPass(const std::atomic<bool>* cancel) {
 
   arena_->execute([&] {
     tbb::parallel_for(size_t(0), tiles_.size(), [&](size_t i) {
-      if (!cancelled()) renderTile(tiles_[i], first, count);
+      if (!cancelled()) renderTile(tiles_[i], first, count, cancel);
     });
   });
   if (cancelled()) return false;
@@ -121,7 +130,13 @@ bool Renderer::renderPass(const std::atomic<bool>* cancel) {
       });
     }
   });
-  for (const Tile& tile : tiles_) stats_.counters += tile.counters;
+  for (const Tile& tile : tiles_) {
+    stats_.counters += tile.counters;
+    const uint64_t* pixelRays = tile.rays.data();
+    for (int y = tile.y0; y < tile.y1; ++y)
+      for (int x = tile.x0; x < tile.x1; ++x)
+        raysPerPixel_[static_cast<size_t>(y) * settings_.width + x] += *pixelRays++;
+  }
   stats_.samplesPerPixel += count;
   stats_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return true;

@@ -1,6 +1,6 @@
 // The renderer: tiles x passes on TBB. Each pass adds `samplesPerPass` samples to every pixel;
 // each tile splats into its own FilmBlock and the blocks are merged in a fixed order, so the image
-// is bit-identical for any thread count. A render can be cancelled between tiles.
+// is bit-identical for any thread count. A render can be cancelled at any pixel.
 #pragma once
 
 #include <tbb/task_arena.h>
@@ -55,13 +55,16 @@ class Renderer {
                  const std::atomic<bool>* cancel = nullptr);
 
   const Film& film() const { return film_; }
+  // Rays traced for the samples of each pixel so far (rows top to bottom), for ray heatmaps.
+  const std::vector<uint64_t>& raysPerPixel() const { return raysPerPixel_; }
   const RenderStats& stats() const { return stats_; }
   const RenderSettings& settings() const { return settings_; }
   const PixelFilter& filter() const { return filter_; }
 
  private:
   struct Tile;
-  void renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount);
+  void renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount,
+                  const std::atomic<bool>* cancel);
 
   const RayTracer& tracer_;
   const Camera& camera_;
@@ -71,6 +74,7 @@ class Renderer {
   PixelFilter filter_;
   Sampler sampler_;
   Film film_;
+  std::vector<uint64_t> raysPerPixel_;
   std::vector<Tile> tiles_;
   std::unique_ptr<tbb::task_arena> arena_;
   RenderStats stats_;

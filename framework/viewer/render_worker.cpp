@@ -8,7 +8,6 @@
 #include "film/pixel_filter.h"
 #include "render/integrator_registry.h"
 #include "scene/camera.h"
-#include "viewer/viewer_integrator.h"
 
 namespace pathway {
 namespace {
@@ -45,7 +44,6 @@ struct RenderWorker::Lane {
   std::map<std::string, double> params;
   // The renderer refers to the camera and the integrators, so a Lane never moves (unique_ptr).
   std::unique_ptr<Integrator> integratorObject;
-  std::unique_ptr<ViewerIntegrator> counting;
   std::unique_ptr<Camera> camera;
   std::unique_ptr<Renderer> renderer;
   std::vector<TodoRecord> todos;
@@ -170,10 +168,9 @@ void RenderWorker::start(WorkerJob job, uint64_t id, Clock::time_point submitted
       const CameraPose& pose = job.camera;
       lane->camera = std::make_unique<Camera>(pose.position, pose.lookAt, pose.up, pose.yfov,
                                               s.width, s.height);
-      lane->counting = std::make_unique<ViewerIntegrator>(*lane->integratorObject, pose, s.width,
-                                                          s.height, &cancel_);
-      lane->renderer = std::make_unique<Renderer>(*scene_->tracer, *lane->camera, *lane->counting,
-                                                  filterFunctions(info.variant), s);
+      lane->renderer =
+          std::make_unique<Renderer>(*scene_->tracer, *lane->camera, *lane->integratorObject,
+                                     filterFunctions(info.variant), s);
       mergeTodos(lane->todos, todosHit());
     } catch (const std::exception& error) {
       lane->renderer.reset();
@@ -210,8 +207,6 @@ void RenderWorker::renderPass(size_t index) {
     clearTodosHit();
     completed = lane.renderer->renderPass(&cancel_);
     mergeTodos(lane.todos, todosHit());
-  } catch (const PassCancelled&) {
-    completed = false;                     // stopped mid-tile (see viewer_integrator.h)
   } catch (const std::exception& error) {  // a stage that throws must not take the viewer down
     lane.error = error.what();
     lane.renderer.reset();
@@ -249,13 +244,10 @@ void RenderWorker::publish(size_t index) {
     frame->images.color = film.develop(&frame->unresolvedPixels);
     frame->images.variance = film.variance();
     frame->images.weight = film.weights();
-    const ViewerIntegrator& counts = *lane.counting;
     const float perSample = 1.0f / static_cast<float>(std::max(1u, frame->stats.samplesPerPixel));
-    frame->raysPerSample.resize(static_cast<size_t>(counts.width()) * counts.height());
-    for (int y = 0; y < counts.height(); ++y)
-      for (int x = 0; x < counts.width(); ++x)
-        frame->raysPerSample[static_cast<size_t>(y) * counts.width() + x] =
-            static_cast<float>(counts.rays(x, y)) * perSample;
+    frame->raysPerSample.clear();
+    for (uint64_t rays : renderer.raysPerPixel())
+      frame->raysPerSample.push_back(static_cast<float>(rays) * perSample);
   }
   const Clock::time_point now = Clock::now();
   if (!lane.published)

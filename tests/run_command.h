@@ -1,0 +1,15 @@
+// Runs a shell command for the end-to-end tests and captures what it prints.
+#pragma once
+
+#include <string>
+
+namespace pathway::test {
+
+struct CommandOutcome {
+  int exitCode;        // -1 when the command did not exit normally
+  std::string output;  // stdout and stderr together
+};
+
+CommandOutcome runCommand(const std::string& command);
+
+}  // namespace pathway::test
