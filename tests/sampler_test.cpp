@@ -561,5 +561,23 @@ TEST(SamplerSobol, IntegratesSmoothFunctionsBetterThanIndependent) {
   EXPECT_LT(sobol, independent / 4) << "sobol " << sobol << ", independent " << independent;
 }
 
+// The 2D fast path must give exactly the values of two 1D calls, or streams would depend on
+// whether an integrator asked for a pair or for two singles.
+TEST(SamplerStream, PairsMatchSingleDimensions) {
+  for (SamplerType type : {SamplerType::Independent, SamplerType::Stratified, SamplerType::Sobol}) {
+    const Sampler sampler(type, 16, 3);
+    for (uint32_t px = 0; px < 4; ++px) {
+      const uint64_t key = sampler.pixelKey(px, 7);
+      for (uint32_t index = 0; index < 20; ++index) {
+        for (uint32_t dimension = 0; dimension < 12; dimension += 2) {
+          const Vec2 pair = sampler.get2D(key, index, dimension);
+          ASSERT_EQ(pair.x, sampler.get(px, 7, index, dimension)) << samplerTypeName(type);
+          ASSERT_EQ(pair.y, sampler.get(px, 7, index, dimension + 1)) << samplerTypeName(type);
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace pathway

@@ -22,7 +22,16 @@ constexpr uint64_t kStrataShuffleSalt = 0x535452415441;  // "STRATA"
 
 // 32 random bits for (pixel, index, dimension). Both dimensions of a pair come from one PCG32
 // stream, seeded by a hash of the pair, so any dimension costs O(1): no stepping past the others.
-// pixelKey is already a hash, so folding in the index and the pair is enough.
+// Seeds derived from pixelKey, which is already a hash: one more mixing step per value is enough.
+// Sobol': the index shuffle is per block of four dimensions, the value scramble per dimension.
+uint32_t sobolShuffleSeed(uint64_t pixelKey, uint32_t dimension) {
+  return static_cast<uint32_t>(hashCombine(pixelKey ^ kIndexShuffleSalt, dimension / 4));
+}
+uint32_t sobolScrambleSeed(uint64_t pixelKey, uint32_t dimension) {
+  return static_cast<uint32_t>(hashCombine(pixelKey ^ kValueScrambleSalt, dimension));
+}
+
+// Independent: one PCG32 per pair of dimensions, seeded from the sample and the pair.
 Pcg32 pairGenerator(uint64_t pixelKey, uint32_t index, uint32_t dimension) {
   return Pcg32(hashCombine(hashCombine(pixelKey, index), dimension / 2));
 }
@@ -126,6 +135,16 @@ Vec2 Sampler::get2D(uint64_t pixelKey, uint32_t index, uint32_t dimension) const
     const float u = toUnitFloat(rng.nextUInt());
     return Vec2(u, toUnitFloat(rng.nextUInt()));
   }
+  if (type_ == SamplerType::Sobol) {
+    // Both dimensions lie in one block of four: one index shuffle, one pass over its bits.
+    const uint32_t shuffledIndex =
+        nestedUniformScramble(index, sobolShuffleSeed(pixelKey, dimension));
+    uint32_t first, second;
+    sobolSamplePair(shuffledIndex, dimension % 4, first, second);
+    return Vec2(
+        toUnitFloat(nestedUniformScramble(first, sobolScrambleSeed(pixelKey, dimension))),
+        toUnitFloat(nestedUniformScramble(second, sobolScrambleSeed(pixelKey, dimension + 1))));
+  }
   return Vec2(get(pixelKey, index, dimension), get(pixelKey, index, dimension + 1));
 }
 
@@ -141,7 +160,7 @@ float Sampler::get(uint64_t pixelKey, uint32_t index, uint32_t dimension) const 
       const uint32_t randomBits = independentBits(pixelKey, index, dimension);
       if (index >= cells) return toUnitFloat(randomBits);  // past the plan: plain random
       const auto pattern =
-          static_cast<uint32_t>(hashValues(pixelKey, dimension / 2, kStrataShuffleSalt));
+          static_cast<uint32_t>(hashCombine(pixelKey ^ kStrataShuffleSalt, dimension / 2));
       const uint32_t cell = permute(index, static_cast<uint32_t>(cells), pattern);
       if (dimension % 2 == 0) return jitterInStratum(cell % strataX_, strataX_, randomBits);
       return jitterInStratum(cell / strataX_, strataY_, randomBits);
@@ -152,15 +171,12 @@ float Sampler::get(uint64_t pixelKey, uint32_t index, uint32_t dimension) const 
       // four. A block's dimensions come from ONE 4D Sobol' point (so, e.g., pixel position 0-1
       // and AO direction 2-3 are stratified jointly), and each block shuffles the sample order
       // on its own, which decorrelates blocks. Each pixel has its own scrambles.
-      const auto shuffleSeed =
-          static_cast<uint32_t>(hashValues(pixelKey, dimension / 4, kIndexShuffleSalt));
       // Owen-scrambling the index maps every aligned block of 2^m indices onto another one, so
       // the first 2^m samples of a pixel are still a whole block of the sequence: a net.
-      const uint32_t shuffledIndex = nestedUniformScramble(index, shuffleSeed);
+      const uint32_t shuffledIndex =
+          nestedUniformScramble(index, sobolShuffleSeed(pixelKey, dimension));
       const uint32_t x = sobolSample(shuffledIndex, dimension % 4);
-      const auto scrambleSeed =
-          static_cast<uint32_t>(hashValues(pixelKey, dimension, kValueScrambleSalt));
-      return toUnitFloat(nestedUniformScramble(x, scrambleSeed));
+      return toUnitFloat(nestedUniformScramble(x, sobolScrambleSeed(pixelKey, dimension)));
     }
   }
   return 0.0f;  // unreachable: every SamplerType is handled above

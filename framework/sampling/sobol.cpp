@@ -70,6 +70,30 @@ constexpr std::array<Matrix, kSobolDimensions> buildMatrices() {
 // Built by the compiler: no start-up cost and no static-initialisation-order questions.
 constexpr std::array<Matrix, kSobolDimensions> kMatrices = buildMatrices();
 
+// The first four dimensions (all the sampler draws from: it pads in blocks of four) also as
+// byte tables: the product with one byte of the index is one lookup, so a point costs four
+// lookups instead of a loop over 32 index bits. 16 KiB, built by the compiler as well.
+using ByteTables = std::array<std::array<std::array<uint32_t, 256>, 4>, 4>;  // [dim][byte][value]
+constexpr ByteTables buildByteTables() {
+  ByteTables tables{};
+  for (uint32_t d = 0; d < 4; ++d)
+    for (uint32_t byte = 0; byte < 4; ++byte)
+      for (uint32_t value = 0; value < 256; ++value) {
+        uint32_t x = 0;
+        for (uint32_t bit = 0; bit < 8; ++bit)
+          if (value & (1u << bit)) x ^= kMatrices[d][8 * byte + bit];
+        tables[d][byte][value] = x;
+      }
+  return tables;
+}
+constexpr ByteTables kByteTables = buildByteTables();
+
+uint32_t tableSample(uint32_t index, uint32_t dimension) {
+  const auto& t = kByteTables[dimension];
+  return t[0][index & 0xffu] ^ t[1][(index >> 8) & 0xffu] ^ t[2][(index >> 16) & 0xffu] ^
+         t[3][index >> 24];
+}
+
 // Laine & Karras (2011), with Burley's constants. The constants are even, so `x * c` only carries
 // bits upwards: bit j of the result depends on bits 0..j of the input alone. That makes it a
 // bijection, and, applied to reversed bits, a scramble in which each bit depends only on the
@@ -96,12 +120,30 @@ uint32_t reverseBits(uint32_t x) {
 
 uint32_t sobolSample(uint32_t index, uint32_t dimension) {
   assert(dimension < kSobolDimensions);
+  if (dimension < 4) return tableSample(index, dimension);
   const Matrix& columns = kMatrices[dimension];
   uint32_t x = 0;
   for (uint32_t k = 0; index != 0; index >>= 1, ++k) {
     if (index & 1) x ^= columns[k];  // matrix-vector product over GF(2)
   }
   return x;
+}
+
+void sobolSamplePair(uint32_t index, uint32_t dimension, uint32_t& first, uint32_t& second) {
+  assert(dimension + 1 < kSobolDimensions);
+  if (dimension + 1 < 4) {
+    first = tableSample(index, dimension);
+    second = tableSample(index, dimension + 1);
+    return;
+  }
+  const Matrix& a = kMatrices[dimension];
+  const Matrix& b = kMatrices[dimension + 1];
+  first = second = 0;
+  for (uint32_t k = 0; index != 0; index >>= 1, ++k) {
+    const uint32_t mask = 0u - (index & 1);  // all ones when bit k is set
+    first ^= a[k] & mask;
+    second ^= b[k] & mask;
+  }
 }
 
 uint32_t nestedUniformScramble(uint32_t x, uint32_t seed) {

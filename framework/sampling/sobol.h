@@ -16,6 +16,8 @@ constexpr uint32_t kSobolDimensions = 64;
 // natural order (not Gray-code order), so point i is a pure function of i. Every aligned block of
 // 2^m consecutive points is a net; dimension 0 is the bit reversal of `index`.
 uint32_t sobolSample(uint32_t index, uint32_t dimension);
+// Dimensions `dimension` and `dimension + 1` of one point, in one pass over the index bits.
+void sobolSamplePair(uint32_t index, uint32_t dimension, uint32_t& first, uint32_t& second);
 
 // Nested uniform (Owen) scrambling in base 2 of a 32-bit fraction: each bit is flipped by a
 // pseudo-random function of the bits above it, as Owen's random tree of permutations does.
