@@ -2,6 +2,8 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <glm/glm.hpp>
 #include <limits>
 
@@ -53,6 +55,23 @@ struct Frame {
 // new ray leaves from) by a few float ULPs of its own coordinates, so that the new ray cannot hit
 // the surface it starts on at any scale or distance from the origin.
 // Wächter & Binder, "A Fast and Robust Method for Avoiding Self-Intersection", Ray Tracing Gems.
-Vec3 offsetRayOrigin(const Vec3& p, const Vec3& n);
+// Inline: it runs for every secondary ray.
+inline Vec3 offsetRayOrigin(const Vec3& p, const Vec3& n) {
+  // Near the origin ULP steps are tiny, so a fixed absolute offset takes over there.
+  constexpr float kOrigin = 1.0f / 32.0f;
+  constexpr float kFloatScale = 1.0f / 65536.0f;
+  constexpr float kIntScale = 256.0f;
+  Vec3 result;
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto ulps = static_cast<int32_t>(kIntScale * n[axis]);
+    int32_t bits;
+    std::memcpy(&bits, &p[axis], sizeof bits);
+    bits += p[axis] < 0 ? -ulps : ulps;
+    float stepped;
+    std::memcpy(&stepped, &bits, sizeof stepped);
+    result[axis] = std::fabs(p[axis]) < kOrigin ? p[axis] + kFloatScale * n[axis] : stepped;
+  }
+  return result;
+}
 
 }  // namespace pathway

@@ -152,19 +152,4 @@ bool RayTracer::occluded(const Ray& ray, RayKind kind, RayCounters& counters) co
   return r.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
 }
 
-Ray RayTracer::spawnRay(const SurfaceHit& from, const Vec3& direction, float tMax) {
-  const Vec3 side = glm::dot(direction, from.normal) >= 0.0f ? from.normal : -from.normal;
-  return Ray{offsetRayOrigin(from.position, side), direction, tMax};
-}
-
-Ray RayTracer::spawnRayTo(const SurfaceHit& from, const Vec3& target, const Vec3& targetNormal) {
-  const Vec3 toTarget = target - from.position;
-  const Vec3 side = glm::dot(toTarget, from.normal) >= 0.0f ? from.normal : -from.normal;
-  const Vec3 origin = offsetRayOrigin(from.position, side);
-  const Vec3 targetSide = glm::dot(toTarget, targetNormal) <= 0.0f ? targetNormal : -targetNormal;
-  const Vec3 end = offsetRayOrigin(target, targetSide);
-  // Unnormalised direction: the segment is (0, 1], ending just in front of the target surface.
-  return Ray{origin, end - origin, 1.0f};
-}
-
 }  // namespace pathway
