@@ -46,9 +46,6 @@ struct Frame {
   Vec3 toWorld(const Vec3& local) const {
     return local.x * tangent + local.y * bitangent + local.z * normal;
   }
-  Vec3 toLocal(const Vec3& world) const {
-    return Vec3(glm::dot(world, tangent), glm::dot(world, bitangent), glm::dot(world, normal));
-  }
 };
 
 // Moves a surface point off its surface along the geometric normal `n` (pointing to the side the

@@ -15,8 +15,7 @@ bool isResolved(const PixelSums& p) {
 
 }  // namespace
 
-FilmBlock::FilmBlock(int imageWidth, int imageHeight, int x0, int y0, int width, int height)
-    : imageWidth_(imageWidth), imageHeight_(imageHeight) {
+FilmBlock::FilmBlock(int imageWidth, int imageHeight, int x0, int y0, int width, int height) {
   x0_ = std::max(0, x0);
   y0_ = std::max(0, y0);
   width_ = std::max(0, std::min(imageWidth, x0 + width) - x0_);

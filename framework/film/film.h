@@ -60,8 +60,6 @@ class FilmBlock {
   void addSample(int x, int y, float weight, const Color& radiance);
   void clear();
 
-  int imageWidth() const { return imageWidth_; }
-  int imageHeight() const { return imageHeight_; }
   int x0() const { return x0_; }
   int y0() const { return y0_; }
   int width() const { return width_; }
@@ -69,7 +67,6 @@ class FilmBlock {
   const PixelSums& at(int x, int y) const { return sums_[(y - y0_) * width_ + (x - x0_)]; }
 
  private:
-  int imageWidth_ = 0, imageHeight_ = 0;
   int x0_ = 0, y0_ = 0, width_ = 0, height_ = 0;
   std::vector<PixelSums> sums_;
 };

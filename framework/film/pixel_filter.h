@@ -47,7 +47,6 @@ class PixelFilter {
   PixelFilter(FilterType type, float radius, const FilterFunctions& functions);
 
   float radius() const { return radius_; }  // f is 0 when |dx| or |dy| exceeds it
-  FilterType type() const { return type_; }
   float evaluate1D(float d) const;
   float evaluate(float dx, float dy) const { return evaluate1D(dx) * evaluate1D(dy); }
 

@@ -23,7 +23,6 @@ class ParamValues {
   int integer(const std::string& name) const { return static_cast<int>(number(name)); }
   bool flag(const std::string& name) const { return number(name) != 0.0; }
   void set(const std::string& name, double value) { values_[name] = value; }
-  const std::map<std::string, double>& all() const { return values_; }
 
  private:
   std::map<std::string, double> values_;

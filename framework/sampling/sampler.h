@@ -39,9 +39,7 @@ class Sampler {
   // A hash of (pixel, seed): every sampler's randomisation starts from it.
   uint64_t pixelKey(uint32_t pixelX, uint32_t pixelY) const;
 
-  SamplerType type() const { return type_; }
   uint32_t samplesPerPixel() const { return samplesPerPixel_; }
-  uint64_t seed() const { return seed_; }
 
  private:
   SamplerType type_;
