@@ -60,13 +60,17 @@ inline Vec3 offsetRayOrigin(const Vec3& p, const Vec3& n) {
   constexpr float kIntScale = 256.0f;
   Vec3 result;
   for (int axis = 0; axis < 3; ++axis) {
+    if (std::fabs(p[axis]) < kOrigin) {
+      result[axis] = p[axis] + kFloatScale * n[axis];
+      continue;
+    }
+    // Step the float's bit pattern by whole ULPs, away from zero when n points away from it.
+    // Unsigned arithmetic: the same bits as the paper's signed version, without its overflow.
     const auto ulps = static_cast<int32_t>(kIntScale * n[axis]);
-    int32_t bits;
+    uint32_t bits;
     std::memcpy(&bits, &p[axis], sizeof bits);
-    bits += p[axis] < 0 ? -ulps : ulps;
-    float stepped;
-    std::memcpy(&stepped, &bits, sizeof stepped);
-    result[axis] = std::fabs(p[axis]) < kOrigin ? p[axis] + kFloatScale * n[axis] : stepped;
+    bits += static_cast<uint32_t>(p[axis] < 0 ? -ulps : ulps);
+    std::memcpy(&result[axis], &bits, sizeof bits);
   }
   return result;
 }
