@@ -68,7 +68,7 @@ int run(const RenderOptions& options) {
   s.samplesPerPixel = options.spp;
   s.seed = options.seed;
   s.threads = options.threads;
-  // Passes of about a second's worth keep the progress bar moving without slowing the render.
+  // Sixteen passes keep the progress bar moving; more would only add merge work.
   s.samplesPerPass = std::max(1u, options.spp / 16);
   for (const std::string& output : options.outputs) checkImagePath(output);
 
