@@ -2,7 +2,7 @@
 // the other, publishing a developed image after each; the UI thread only swaps in the newest image
 // (a shared_ptr under a mutex), so drawing never waits for rendering. submit() describes what to
 // render; a different job cancels the running pass through the renderer's atomic flag and starts
-// over at once, so even a pass that would take minutes stops within one tile.
+// over at once: the renderer checks the flag at every pixel, so even a long pass stops promptly.
 //
 // Split view: a job has one lane per pane. The lanes never run at the same time: the one behind
 // (in render time, or in rays traced) gets the next pass, so both sides stay at equal time or
