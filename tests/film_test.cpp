@@ -16,7 +16,7 @@ namespace {
 
 TEST(Film, SplatAddsTheFilterWeightToEveryPixelInReach) {
   PATHWAY_REQUIRE_SOLUTIONS();
-  const FilterFunctions& reference = filterFunctions(Variant::Reference);
+  const FilterFunctions& reference = filterFunctions(test::variantUnderTest());
   for (FilterType type :
        {FilterType::Box, FilterType::Tent, FilterType::MitchellNetravali, FilterType::Gaussian}) {
     const PixelFilter filter(type, naturalFilterRadius(type), reference);
@@ -64,7 +64,7 @@ TEST(Film, ConstantSceneComesBackExactlyForEveryFilterAndSampleCount) {
        {FilterType::Box, FilterType::Tent, FilterType::MitchellNetravali, FilterType::Gaussian}) {
     for (uint32_t spp : {1u, 2u, 4u}) {
       RenderRequest request;
-      request.integrator = "stage1@ref";
+      request.integrator = test::stage("stage1");
       request.settings.width = 48;
       request.settings.height = 32;
       request.settings.samplesPerPixel = spp;

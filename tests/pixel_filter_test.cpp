@@ -21,7 +21,7 @@ double integrate(const PixelFilter& filter) {
 }
 
 const FilterFunctions& reference() {
-  return filterFunctions(Variant::Reference);
+  return filterFunctions(test::variantUnderTest());
 }
 
 TEST(PixelFilter, ProfilesIntegrateToTheirAnalyticValues) {

@@ -1,11 +1,43 @@
-// Tests of stage code run against the reference solutions; in a student handout (no solutions/)
-// they are skipped with a note rather than failing.
+// Which version of the stages the stage tests check.
+//
+// By default they check the reference solutions, and in a student handout (no solutions/) they
+// are skipped. With PATHWAY_TEST_STUDENT=1 in the environment they check the student's stages
+// instead ("stageN", the files in assignments/), so students can run the course's own analytic
+// tests on their work:  PATHWAY_TEST_STUDENT=1 ctest --preset release -R "Stage|Film|PixelFilter"
 #pragma once
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <string>
+
+#include "core/variant.h"
+#include "render/integrator_registry.h"
+
+namespace pathway::test {
+
+inline bool checkingStudentCode() {
+  const char* value = std::getenv("PATHWAY_TEST_STUDENT");
+  return value && *value && std::string(value) != "0";
+}
+
+inline Variant variantUnderTest() {
+  return checkingStudentCode() ? Variant::Student : Variant::Reference;
+}
+
+// "stage2" -> "stage2@ref" (default) or "stage2" (PATHWAY_TEST_STUDENT=1).
+inline std::string stage(const std::string& base) {
+  return variantIntegratorName(base, variantUnderTest());
+}
+
 #ifdef PATHWAY_HAS_SOLUTIONS
-#define PATHWAY_REQUIRE_SOLUTIONS() (void)0
+constexpr bool kHaveSolutions = true;
 #else
-#define PATHWAY_REQUIRE_SOLUTIONS() GTEST_SKIP() << "built without solutions/"
+constexpr bool kHaveSolutions = false;
 #endif
+
+}  // namespace pathway::test
+
+#define PATHWAY_REQUIRE_SOLUTIONS()                                                \
+  if (!::pathway::test::checkingStudentCode() && !::pathway::test::kHaveSolutions) \
+  GTEST_SKIP() << "built without solutions/ (PATHWAY_TEST_STUDENT=1 checks your stages)"

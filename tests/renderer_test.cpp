@@ -18,7 +18,7 @@ namespace {
 
 RenderRequest smallRequest(int threads, SamplerType sampler) {
   RenderRequest request;
-  request.integrator = "stage1@ref";
+  request.integrator = test::stage("stage1");
   request.settings.width = 70;  // not a multiple of the tile size, on purpose
   request.settings.height = 45;
   request.settings.samplesPerPixel = 4;
@@ -84,7 +84,8 @@ TEST(Renderer, DropsAndCountsNonFiniteSamples) {
   RenderSettings settings;
   settings.width = settings.height = 32;
   settings.samplesPerPixel = 8;
-  Renderer renderer(tracer, camera, integrator, filterFunctions(Variant::Reference), settings);
+  Renderer renderer(tracer, camera, integrator, filterFunctions(test::variantUnderTest()),
+                    settings);
   renderer.renderAll();
   const RayCounters& c = renderer.stats().counters;
   EXPECT_EQ(c.invalidSamples + c.samples, 32u * 32 * 8);
@@ -100,11 +101,12 @@ TEST(Renderer, CancelledPassLeavesTheFilmUntouched) {
   const Scene scene = test::boxRoom();
   const RayTracer tracer(scene);
   const Camera camera(scene, 32, 32);
-  const auto integrator = findIntegrator("stage1@ref").create(ParamValues{}, scene);
+  const auto integrator = findIntegrator(test::stage("stage1")).create(ParamValues{}, scene);
   RenderSettings settings;
   settings.width = settings.height = 32;
   settings.samplesPerPixel = 4;
-  Renderer renderer(tracer, camera, *integrator, filterFunctions(Variant::Reference), settings);
+  Renderer renderer(tracer, camera, *integrator, filterFunctions(test::variantUnderTest()),
+                    settings);
   ASSERT_TRUE(renderer.renderPass());
   const Image before = renderer.film().develop();
   const std::atomic<bool> cancel{true};
@@ -121,11 +123,12 @@ TEST(Renderer, CancelStopsAPassOfManySamplesPerPixelPromptly) {
   const Scene scene = test::boxRoom();
   const RayTracer tracer(scene);
   const Camera camera(scene, 64, 64);
-  const auto integrator = findIntegrator("stage1@ref").create(ParamValues{}, scene);
+  const auto integrator = findIntegrator(test::stage("stage1")).create(ParamValues{}, scene);
   RenderSettings settings;
   settings.width = settings.height = 64;
   settings.samplesPerPixel = settings.samplesPerPass = 1u << 20;  // hours of work in one pass
-  Renderer renderer(tracer, camera, *integrator, filterFunctions(Variant::Reference), settings);
+  Renderer renderer(tracer, camera, *integrator, filterFunctions(test::variantUnderTest()),
+                    settings);
   std::atomic<bool> cancel{false};
   auto pass = std::async(std::launch::async, [&] { return renderer.renderPass(&cancel); });
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
@@ -143,14 +146,15 @@ TEST(Renderer, CountsTheRaysOfEveryPixel) {
   const Scene scene = loadScene(std::string(PATHWAY_SCENES_DIR) + "/furnace_closed.gltf");
   const RayTracer tracer(scene);
   const Camera camera(scene, 40, 30);
-  const IntegratorInfo& info = findIntegrator("stage4@ref");
+  const IntegratorInfo& info = findIntegrator(test::stage("stage4"));
   const auto integrator = info.create(
       resolveParams(info.name, info.params, {{"branching", "2"}, {"depth", "2"}}), scene);
   RenderSettings settings;
   settings.width = 40;
   settings.height = 30;
   settings.samplesPerPixel = 3;
-  Renderer renderer(tracer, camera, *integrator, filterFunctions(Variant::Reference), settings);
+  Renderer renderer(tracer, camera, *integrator, filterFunctions(test::variantUnderTest()),
+                    settings);
   renderer.renderAll();
   const std::vector<uint64_t>& rays = renderer.raysPerPixel();
   ASSERT_EQ(rays.size(), 40u * 30);

@@ -38,7 +38,7 @@ TEST(StageAO, OpenPlaneIsExactlyOneAtEveryScaleAndOffset) {
     for (float offset : {0.0f, 1e4f}) {
       const Scene scene = test::openPlane(scale, offset);
       const std::string distance = std::to_string(10.0f * scale);
-      for (const char* integrator : {"stage2@ref", "stage3@ref"}) {
+      for (const std::string& integrator : {test::stage("stage2"), test::stage("stage3")}) {
         const RenderResult result =
             render(scene, {integrator, {{"ao-distance", distance}}, 24, 24, 8});
         // One blocked AO ray would lower a pixel by at least 1/(8·4); cos θ / (π·pdf) itself
@@ -55,7 +55,7 @@ TEST(StageAO, FloorUnderACeilingIsHOverRSquared) {
   PATHWAY_REQUIRE_SOLUTIONS();
   const Scene scene = sceneFile("ceiling.gltf");  // h = 1
   for (double r : {2.0, 4.0}) {
-    for (const char* integrator : {"stage2@ref", "stage3@ref"}) {
+    for (const std::string& integrator : {test::stage("stage2"), test::stage("stage3")}) {
       RenderSpec spec{integrator, {{"ao-distance", std::to_string(r)}}, 24, 24, 64};
       const Estimate ao = meanOverPixels(render(scene, spec));
       EXPECT_TRUE(agree(ao, (1.0 / r) * (1.0 / r)))
@@ -76,7 +76,7 @@ TEST(StageAO, FloorBesideAWallIsOneHalfAndInACornerOneQuarter) {
   };
   for (const Case& c : {Case{"wall.gltf", 0.5, 0.001}, Case{"corner.gltf", 0.25, 0.0015}}) {
     const Scene scene = sceneFile(c.file);
-    for (const char* integrator : {"stage2@ref", "stage3@ref"}) {
+    for (const std::string& integrator : {test::stage("stage2"), test::stage("stage3")}) {
       const Estimate ao =
           meanOverPixels(render(scene, {integrator, {{"ao-distance", "1e6"}}, 24, 24, 64}));
       EXPECT_TRUE(agree(ao, c.expected, c.allowance))
@@ -89,14 +89,15 @@ TEST(StageAO, NestedAnd4DAgreeInMean) {
   PATHWAY_REQUIRE_SOLUTIONS();
   const Scene scene = sceneFile("cornell_box.gltf");
   // Equal rays per pixel: nested 16 eye samples x (1 + 3 AO rays) = 64; 4D 32 samples x 2 = 64.
-  const Estimate nested = meanOverPixels(
-      render(scene, {"stage2@ref", {{"ao-rays", "3"}, {"ao-distance", "0.2"}}, 32, 32, 16}));
+  const Estimate nested = meanOverPixels(render(
+      scene, {test::stage("stage2"), {{"ao-rays", "3"}, {"ao-distance", "0.2"}}, 32, 32, 16}));
   const Estimate fourD = meanOverPixels(render(
-      scene, {"stage3@ref", {{"ao-distance", "0.2"}}, 32, 32, 32, SamplerType::Independent, 9}));
+      scene,
+      {test::stage("stage3"), {{"ao-distance", "0.2"}}, 32, 32, 32, SamplerType::Independent, 9}));
   EXPECT_TRUE(agree(nested, fourD)) << describe(nested) << " vs " << describe(fourD);
   // ... and a different AO distance gives a clearly different mean (the test can fail).
   const Estimate shorter =
-      meanOverPixels(render(scene, {"stage3@ref", {{"ao-distance", "0.05"}}, 32, 32, 32}));
+      meanOverPixels(render(scene, {test::stage("stage3"), {{"ao-distance", "0.05"}}, 32, 32, 32}));
   EXPECT_FALSE(agree(shorter, fourD));
 }
 
@@ -114,7 +115,7 @@ TEST(StageFurnace, NaiveRecursionMatchesTheTruncatedSeriesWithExactRayCounts) {
   };
   for (const Case& c : {Case{1, 0}, Case{2, 3}, Case{3, 2}, Case{1, 6}}) {
     RenderSpec spec{
-        "stage4@ref",
+        test::stage("stage4"),
         {{"branching", std::to_string(c.branching)}, {"depth", std::to_string(c.depth)}},
         16,
         16,
@@ -139,7 +140,7 @@ TEST(StageFurnace, NaiveRecursionMatchesTheTruncatedSeriesWithExactRayCounts) {
 TEST(StageFurnace, RayBudgetRefusesAnExplodingRequestBeforeRendering) {
   PATHWAY_REQUIRE_SOLUTIONS();
   const Scene scene = sceneFile("furnace_closed.gltf");
-  const IntegratorInfo& info = findIntegrator("stage4@ref");
+  const IntegratorInfo& info = findIntegrator(test::stage("stage4"));
   const ParamValues params =
       resolveParams(info.name, info.params, {{"branching", "100"}, {"depth", "4"}});
   try {
@@ -162,7 +163,7 @@ TEST(StageFurnace, PathTracerMatchesTruncatedAndUnlimitedSeriesWithAndWithoutNee
   for (const char* nee : {"0", "1"}) {
     for (int depth : {0, 1, 3}) {
       // rr-depth high: no roulette, so the truncated series is exact.
-      RenderSpec spec{"stage5@ref",
+      RenderSpec spec{test::stage("stage5"),
                       {{"max-depth", std::to_string(depth)}, {"rr-depth", "100"}, {"nee", nee}},
                       16,
                       16,
@@ -173,7 +174,7 @@ TEST(StageFurnace, PathTracerMatchesTruncatedAndUnlimitedSeriesWithAndWithoutNee
     }
     // No depth limit, Russian roulette from the first bounce: Le / (1 - a) = 2, and it ends.
     RenderSpec spec{
-        "stage5@ref", {{"max-depth", "-1"}, {"rr-depth", "0"}, {"nee", nee}}, 16, 16, 64};
+        test::stage("stage5"), {{"max-depth", "-1"}, {"rr-depth", "0"}, {"nee", nee}}, 16, 16, 64};
     const Estimate L = meanOverPixels(render(scene, spec));
     EXPECT_TRUE(agree(L, 2.0)) << "nee " << nee << ": " << describe(L);
     EXPECT_FALSE(agree(L, truncatedFurnace(3)));  // not just a truncated sum
@@ -186,7 +187,7 @@ TEST(StageFurnace, WhiteFurnaceIsOneEverywhereAndTerminatesAtAlbedoOne) {
   for (const char* nee : {"0", "1"}) {
     // Albedo 1, no depth cap: only Russian roulette (q < 1) or escaping ends a path.
     RenderSpec spec{
-        "stage5@ref", {{"max-depth", "-1"}, {"rr-depth", "0"}, {"nee", nee}}, 24, 24, 32};
+        test::stage("stage5"), {{"max-depth", "-1"}, {"rr-depth", "0"}, {"nee", nee}}, 24, 24, 32};
     const RenderResult result = render(scene, spec);
     const Estimate L = meanOverPixels(result);
     EXPECT_TRUE(agree(L, 1.0)) << "nee " << nee << ": " << describe(L);

@@ -53,7 +53,7 @@ TEST(StageStability, ShrinkingLightAtFixedPowerNeedsNextEventEstimation) {
   for (int i = 0; i < 3; ++i) {
     const Scene scene = test::smallLight(sides[i]);
     auto spec = [&](const char* nee) {
-      return RenderSpec{"stage5@ref", {{"max-depth", "1"}, {"nee", nee}}, 33, 33, spp};
+      return RenderSpec{test::stage("stage5"), {{"max-depth", "1"}, {"nee", nee}}, 33, 33, spp};
     };
     const RenderResult withNee = render(scene, spec("1"));
     const RenderResult withoutNee = render(scene, spec("0"));
@@ -84,7 +84,7 @@ TEST(StageStability, SmallLightCentreMatchesTheFormFactor) {
   const double F = 4.0 * (1.0 / (2.0 * M_PI)) * 2.0 * (a / r) * std::atan(a / r);
   const double expected = 0.5 / M_PI * (1.0 / (M_PI * side * side)) * M_PI * F;
   const RenderResult result =
-      render(test::smallLight(side), {"stage5@ref", {{"max-depth", "1"}}, 33, 33, 1024});
+      render(test::smallLight(side), {test::stage("stage5"), {{"max-depth", "1"}}, 33, 33, 1024});
   const Estimate centre =
       meanOverPixels(result, 0, [](int x, int y) { return x == 16 && y == 16; });
   // The centre pixel sees ±4.5 cm of floor along the view (the camera looks down at 22°), where
@@ -97,10 +97,14 @@ TEST(StageStability, SmallLightCentreMatchesTheFormFactor) {
 TEST(StageStability, LightTouchingAWallStaysFiniteAndUnbiased) {
   PATHWAY_REQUIRE_SOLUTIONS();
   const Scene scene = loadScene(std::string(PATHWAY_SCENES_DIR) + "/light_touching_wall.gltf");
-  const RenderResult nee = render(scene, {"stage5@ref", {{"max-depth", "3"}}, 32, 32, 64});
-  const RenderResult noNee = render(
-      scene,
-      {"stage5@ref", {{"max-depth", "3"}, {"nee", "0"}}, 32, 32, 64, SamplerType::Independent, 2});
+  const RenderResult nee = render(scene, {test::stage("stage5"), {{"max-depth", "3"}}, 32, 32, 64});
+  const RenderResult noNee = render(scene, {test::stage("stage5"),
+                                            {{"max-depth", "3"}, {"nee", "0"}},
+                                            32,
+                                            32,
+                                            64,
+                                            SamplerType::Independent,
+                                            2});
   expectFiniteAndNonNegative(nee, "nee");
   expectFiniteAndNonNegative(noNee, "no nee");
   EXPECT_TRUE(agree(meanOverPixels(nee), meanOverPixels(noNee)));
@@ -110,9 +114,10 @@ TEST(StageStability, NeeOnAndOffAgreeOnTheCornellBox) {
   PATHWAY_REQUIRE_SOLUTIONS();
   const Scene scene = loadScene(std::string(PATHWAY_SCENES_DIR) + "/cornell_box.gltf");
   for (int channel = 0; channel < 3; ++channel) {
-    const RenderResult nee = render(scene, {"stage5@ref", {{"max-depth", "3"}}, 24, 24, 64});
+    const RenderResult nee =
+        render(scene, {test::stage("stage5"), {{"max-depth", "3"}}, 24, 24, 64});
     const RenderResult noNee =
-        render(scene, {"stage5@ref", {{"max-depth", "3"}, {"nee", "0"}}, 24, 24, 256});
+        render(scene, {test::stage("stage5"), {{"max-depth", "3"}, {"nee", "0"}}, 24, 24, 256});
     EXPECT_TRUE(agree(meanOverPixels(nee, channel), meanOverPixels(noNee, channel))) << channel;
   }
 }
@@ -137,7 +142,7 @@ TEST(StageStability, DegenerateAndZeroAreaEmittersAreSkipped) {
   const Scene dirty = roomWithDegenerateEmitters();
   EXPECT_EQ(collectEmissiveTriangles(dirty).size(), collectEmissiveTriangles(clean).size());
   for (const char* pick : {"0", "1"}) {
-    const RenderSpec spec{"stage5@ref", {{"light-pick", pick}}, 24, 24, 32};
+    const RenderSpec spec{test::stage("stage5"), {{"light-pick", pick}}, 24, 24, 32};
     const RenderResult a = render(clean, spec), b = render(dirty, spec);
     expectFiniteAndNonNegative(b, std::string("light-pick ") + pick);
     // Same lights, same random numbers: the degenerate ones change nothing at all.
@@ -151,8 +156,8 @@ TEST(StageStability, GrazingCameraRaysStayFiniteInEveryStage) {
   // Eye exactly in the floor plane, looking along it: rays graze the floor.
   scene.camera->cameraToWorld =
       glm::inverse(glm::lookAt(Vec3(0.0f, -1.0f, 0.9f), Vec3(0.0f, -1.0f, -1.0f), Vec3(0, 1, 0)));
-  for (const char* integrator :
-       {"stage1@ref", "stage2@ref", "stage3@ref", "stage4@ref", "stage5@ref"}) {
+  for (int stage = 1; stage <= 5; ++stage) {
+    const std::string integrator = test::stage("stage" + std::to_string(stage));
     expectFiniteAndNonNegative(render(scene, {integrator, {}, 24, 24, 8}), integrator);
   }
 }
