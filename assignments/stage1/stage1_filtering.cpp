@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/eye_light_integrator.h"
 #include "render/stage_api.h"
 
 namespace pathway {

@@ -50,7 +50,7 @@ class NestedAmbientOcclusion : public Integrator {
     PATHWAY_TODO("average M = aoRays_ AO samples, each with its own samples.next2D()");
     (void)samples;
     // Placeholder: the surface lit from the eye, so you can see where the AO will go.
-    return Color(std::fabs(glm::dot(hit->normal, glm::normalize(cameraRay.direction))));
+    return Color(eyeLightCosine(*hit, cameraRay));
   }
 
  private:

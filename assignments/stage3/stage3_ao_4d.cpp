@@ -28,7 +28,7 @@ class AmbientOcclusion4D : public Integrator {
         "one AO estimate (your stage 2 function is kit_.ambientOcclusionSample)");
     (void)samples, (void)aoDistance_, (void)kit_;
     // Placeholder: the surface lit from the eye.
-    return Color(std::fabs(glm::dot(hit->normal, glm::normalize(cameraRay.direction))));
+    return Color(eyeLightCosine(*hit, cameraRay));
   }
 
  private:

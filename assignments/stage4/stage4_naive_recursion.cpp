@@ -37,8 +37,7 @@ class NaiveRecursion : public Integrator {
     PATHWAY_TODO("emission + the average of N recursive estimates, down to depth D");
     (void)bounce, (void)samples, (void)branching_, (void)depth_, (void)kit_;
     // Placeholder: the surface lit from the eye, plus what it emits.
-    const float cosTheta = std::fabs(glm::dot(hit->normal, glm::normalize(ray.direction)));
-    return hit->albedo * cosTheta + hit->emitted;
+    return eyeLightShading(*hit, ray);
   }
 
   int branching_;

@@ -87,8 +87,7 @@ class PathTracer : public Integrator {
         "Russian roulette with the 1/q weight");
     (void)samples;
     // Placeholder: the surface lit from the eye, plus what it emits.
-    const float cosTheta = std::fabs(glm::dot(hit->normal, glm::normalize(cameraRay.direction)));
-    return hit->albedo * cosTheta + hit->emitted;
+    return eyeLightShading(*hit, cameraRay);
   }
 
  private:

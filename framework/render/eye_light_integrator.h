@@ -10,13 +10,22 @@
 
 namespace pathway {
 
+// |cos θ| between the surface normal and the ray that found the hit.
+inline float eyeLightCosine(const SurfaceHit& hit, const Ray& ray) {
+  return std::fabs(glm::dot(hit.normal, glm::normalize(ray.direction)));
+}
+
+// The eye-light picture of a hit; the skeletons of later stages show it as their placeholder.
+inline Color eyeLightShading(const SurfaceHit& hit, const Ray& ray) {
+  return hit.albedo * eyeLightCosine(hit, ray) + hit.emitted;
+}
+
 class EyeLightIntegrator : public Integrator {
  public:
   Color Li(const Ray& cameraRay, SampleStream&, RenderContext& context) const override {
     const auto hit = context.tracer.intersect(cameraRay, RayKind::Primary, context.counters);
     if (!hit) return context.scene.background;
-    const float cosTheta = std::fabs(glm::dot(hit->normal, glm::normalize(cameraRay.direction)));
-    return hit->albedo * cosTheta + hit->emitted;
+    return eyeLightShading(*hit, cameraRay);
   }
 };
 

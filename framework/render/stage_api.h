@@ -6,6 +6,7 @@
 #include "core/todo.h"
 #include "core/variant.h"
 #include "film/pixel_filter.h"
+#include "render/eye_light_integrator.h"
 #include "render/integrator.h"
 #include "render/integrator_registry.h"
 #include "render/stage_kit.h"
