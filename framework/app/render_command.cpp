@@ -8,6 +8,7 @@
 
 #include "app/commands.h"
 #include "app/progress_bar.h"
+#include "app/shared_options.h"
 #include "core/error.h"
 #include "render/render_job.h"
 #include "scene/gltf_loader.h"
@@ -131,14 +132,8 @@ Command addRenderCommand(CLI::App& app) {
       "  pathway render scenes/cornell_box.gltf -o box.png\n"
       "  pathway render scenes/cornell_box.gltf -i stage1@ref --filter mitchell --spp 4 -o a.exr\n"
       "  pathway render scenes/cornell_box.gltf -i stage2 -p ao-rays=4 -p ao-distance=0.3");
-  render->add_option("scene", options->scene, "glTF 2.0 scene (.gltf or .glb)")
-      ->capture_default_str();
-  render
-      ->add_option("-i,--integrator", options->integrator,
-                   "Integrator by name: stageN is yours, stageN@ref the reference")
-      ->capture_default_str();
-  render->add_option("-p,--param", options->params,
-                     "Integrator parameter name=value (repeatable; see --list)");
+  addSharedOptions(*render, {options->scene, options->integrator, options->params, options->sampler,
+                             options->seed, options->filter, options->filterRadius});
   render
       ->add_option("-o,--output", options->outputs,
                    "Output file(s): .exr (linear, variance, metadata) or .png (sRGB)")
@@ -153,20 +148,9 @@ Command addRenderCommand(CLI::App& app) {
       ->add_option("--height", options->height,
                    "Image height in pixels (default: from the camera's aspect ratio)")
       ->check(CLI::Range(1, 16384));
-  render->add_option(
-      "--sampler", options->sampler,
-      "independent, stratified or sobol (default: the integrator's; stage 3 uses sobol)");
-  render->add_option("--seed", options->seed, "Random seed; same seed, same image")
-      ->capture_default_str();
   render->add_option("--threads", options->threads, "Worker threads (0: all cores)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
-  render->add_option("--filter", options->filter, "Pixel filter: box, tent, mitchell, gaussian")
-      ->capture_default_str();
-  render
-      ->add_option("--filter-radius", options->filterRadius,
-                   "Filter support in pixels (default: box 0.5, tent 1, mitchell 2, gaussian 1.5)")
-      ->check(CLI::Range(0.0f, 16.0f));
   render->add_option("--exposure", options->exposure, "PNG exposure in stops (EXR is never scaled)")
       ->check(CLI::Range(-20.0f, 20.0f))
       ->capture_default_str();

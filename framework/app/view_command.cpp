@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "app/commands.h"
+#include "app/shared_options.h"
 #include "viewer/viewer_app.h"
 
 namespace pathway {
@@ -21,12 +22,8 @@ Command addViewCommand(CLI::App& app) {
       "  pathway view --headless --frames 60 --screenshot ui.png   (no display needed)\n"
       "  pathway view --benchmark                        progressive fps, time to first image\n"
       "Press H in the viewer for the keys and mouse.");
-  view->add_option("scene", options->scene, "glTF 2.0 scene (.gltf or .glb)")
-      ->capture_default_str();
-  view->add_option("-i,--integrator", options->integrator,
-                   "Integrator by name: stageN is yours, stageN@ref the reference")
-      ->capture_default_str();
-  view->add_option("-p,--param", options->params, "Integrator parameter name=value (repeatable)");
+  addSharedOptions(*view, {options->scene, options->integrator, options->params, options->sampler,
+                           options->seed, options->filter, options->filterRadius});
   view->add_option("--split", options->splitIntegrator,
                    "Split view: this integrator in the right pane");
   view->add_option("--split-param", options->splitParams,
@@ -52,14 +49,6 @@ Command addViewCommand(CLI::App& app) {
                    "Samples per pixel added between two displayed images")
       ->check(CLI::Range(1u, 1u << 20))
       ->capture_default_str();
-  view->add_option("--sampler", options->sampler,
-                   "independent, stratified or sobol (default: the stage's usual one)");
-  view->add_option("--seed", options->seed, "Random seed")->capture_default_str();
-  view->add_option("--filter", options->filter, "Pixel filter: box, tent, mitchell, gaussian")
-      ->capture_default_str();
-  view->add_option("--filter-radius", options->filterRadius,
-                   "Filter support in pixels (0: the filter's natural radius)")
-      ->check(CLI::Range(0.0f, 6.0f));
   view->add_option("--exposure", options->exposure, "Display exposure in stops")
       ->check(CLI::Range(-10.0f, 10.0f))
       ->capture_default_str();

@@ -71,8 +71,9 @@ const FilterFunctions& filterFunctions(Variant variant) {
 
 PixelFilter::PixelFilter(FilterType type, float radius, const FilterFunctions& functions)
     : type_(type), radius_(radius), functions_(&functions) {
-  if (!(radius > 0.0f) || !std::isfinite(radius) || radius > 16.0f)
-    throw PathwayError("filter radius must be in (0, 16] pixels, got " + std::to_string(radius));
+  if (!(radius > 0.0f) || !std::isfinite(radius) || radius > kMaxFilterRadius)
+    throw PathwayError("filter radius must be in (0, " + std::to_string(kMaxFilterRadius) +
+                       "] pixels, got " + std::to_string(radius));
   scale_ = naturalFilterRadius(type) / radius;
 }
 

@@ -16,6 +16,9 @@ namespace pathway {
 
 enum class FilterType { Box, Tent, MitchellNetravali, Gaussian };
 
+// The widest support a filter may be given, in pixels (it must fit the renderer's tile margins).
+constexpr float kMaxFilterRadius = 8.0f;
+
 // "box", "tent", "mitchell", "gaussian"; throws PathwayError naming the valid choices otherwise.
 FilterType parseFilterType(const std::string& name);
 std::string filterTypeName(FilterType type);

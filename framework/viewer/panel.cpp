@@ -126,7 +126,7 @@ void samplingWidgets(ViewerState& state, const PanelStatus& status) {
         state.filter = parseFilterType(filters[i]);
     ImGui::EndCombo();
   }
-  ImGui::SliderFloat("filter radius", &state.filterRadius, 0.0f, 6.0f,
+  ImGui::SliderFloat("filter radius", &state.filterRadius, 0.0f, kMaxFilterRadius,
                      state.filterRadius > 0.0f ? "%.2f px" : "natural",
                      ImGuiSliderFlags_AlwaysClamp);
   tooltip(
