@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "film/pixel_filter.h"
-#include "reference_variant.h"
 #include "render/render_job.h"
+#include "stage_under_test.h"
 #include "test_scenes.h"
 
 namespace pathway {

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "reference_variant.h"
+#include "stage_under_test.h"
 
 namespace pathway {
 namespace {

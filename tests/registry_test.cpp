@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
-#include "reference_variant.h"
 #include "render/integrator_registry.h"
+#include "stage_under_test.h"
 
 namespace pathway {
 namespace {

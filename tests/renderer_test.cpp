@@ -8,9 +8,9 @@
 #include <numeric>
 #include <thread>
 
-#include "reference_variant.h"
 #include "render/render_job.h"
 #include "scene/gltf_loader.h"
+#include "stage_under_test.h"
 #include "test_scenes.h"
 
 namespace pathway {

@@ -6,10 +6,10 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "reference_variant.h"
 #include "render/ray_budget.h"
 #include "render_helpers.h"
 #include "scene/gltf_loader.h"
+#include "stage_under_test.h"
 #include "test_scenes.h"
 
 namespace pathway {

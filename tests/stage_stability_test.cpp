@@ -6,10 +6,10 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "reference_variant.h"
 #include "render_helpers.h"
 #include "scene/emitters.h"
 #include "scene/gltf_loader.h"
+#include "stage_under_test.h"
 #include "test_scenes.h"
 
 namespace pathway {
