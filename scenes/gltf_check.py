@@ -63,10 +63,13 @@ COMPONENTS = {5120: ("b", 1), 5121: ("B", 1), 5122: ("h", 2), 5123: ("H", 2), 51
               5126: ("f", 4)}
 TYPE_SIZES = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT2": 4, "MAT3": 9, "MAT4": 16}
 SUPPORTED_REQUIRED = {EMISSIVE_STRENGTH}
+# A required extension the C++ loader ignores unless strict: Blender requires it for any lamp.
+LAMPS = "KHR_lights_punctual"
 
 
-def load_gltf(path):
-    """Returns (doc, [buffer bytes]) for a .gltf or .glb file."""
+def load_gltf(path, strict=True):
+    """Returns (doc, [buffer bytes]) for a .gltf or .glb file. strict=False accepts a required
+    KHR_lights_punctual, as the C++ loader does by default."""
     with open(path, "rb") as f:
         raw = f.read()
     bin_chunk = None
@@ -93,6 +96,8 @@ def load_gltf(path):
     if doc.get("asset", {}).get("version") != "2.0":
         raise GltfError("asset.version is not 2.0")
     lacking = set(doc.get("extensionsRequired", [])) - SUPPORTED_REQUIRED
+    if not strict:
+        lacking.discard(LAMPS)
     if lacking:
         raise GltfError("required extension not supported: %s" % ", ".join(sorted(lacking)))
     buffers = []
@@ -175,11 +180,11 @@ def transform_vector(m, v):
     return tuple(m[r][0] * v[0] + m[r][1] * v[1] + m[r][2] * v[2] for r in range(3))
 
 
-def read_scene(path):
+def read_scene(path, strict=True):
     """Flattens the default scene: returns a dict with world-space triangles per mesh instance,
     the first camera (depth-first), the background and the features a Lambertian renderer
-    would have to skip. Raises GltfError for anything malformed."""
-    doc, buffers = load_gltf(path)
+    would have to skip. Raises GltfError for anything malformed. strict: as for load_gltf."""
+    doc, buffers = load_gltf(path, strict)
     scene = doc["scenes"][doc.get("scene", 0)]
     out = {"doc": doc, "parts": [], "camera": None, "skipped": set(),
            "background": scene.get("extras", {}).get("pathway_background", [0.0, 0.0, 0.0])}

@@ -129,9 +129,9 @@ std::string writeQuadFile(const std::string& name, const std::string& nodes,
 }
 
 // Loads `path`, expecting a PathwayError; returns its message.
-std::string loadError(const std::string& path) {
+std::string loadError(const std::string& path, const SceneLoadOptions& options = {}) {
   try {
-    loadScene(path);
+    loadScene(path, options);
   } catch (const PathwayError& error) {
     return error.what();
   }
@@ -166,7 +166,7 @@ INSTANTIATE_TEST_SUITE_P(
                     ValidCase{"non_indexed.gltf", 2}, ValidCase{"interleaved.gltf", 2},
                     ValidCase{"hierarchy_trs.gltf", 1}, ValidCase{"hierarchy_matrix.gltf", 1},
                     ValidCase{"camera.gltf", 2}, ValidCase{"emissive_strength.gltf", 2},
-                    ValidCase{"unsupported_features.gltf", 2}),
+                    ValidCase{"unsupported_features.gltf", 2}, ValidCase{"required_lamp.gltf", 2}),
     [](const testing::TestParamInfo<ValidCase>& info) {
       std::string name = info.param.file;
       for (char& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
@@ -405,6 +405,54 @@ TEST(GltfWarnings, IgnoredMaterialFeaturesAreNamed) {
   }
 }
 
+TEST(GltfWarnings, RequiredLampsLoadWithOneWarningNamingThem) {
+  // Blender's export: extensionsUsed and extensionsRequired both list KHR_lights_punctual.
+  const std::string path = kCases + "required_lamp.gltf";
+  testing::internal::CaptureStderr();
+  const Scene scene = loadScene(path);
+  const std::string printed = testing::internal::GetCapturedStderr();
+
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  const Mesh& mesh = scene.meshes[0];
+  ASSERT_EQ(mesh.positions.size(), kQuad.size());
+  for (size_t i = 0; i < kQuad.size(); ++i) expectNear(mesh.positions[i], kQuad[i], 0.0f);
+  EXPECT_EQ(mesh.triangles, kQuadTriangles);
+  EXPECT_FALSE(scene.camera.has_value());
+
+  // One warning, although the file lists the extension twice and has a lamp.
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  const std::string& warning = scene.warnings[0];
+  EXPECT_EQ(warning.rfind(path + ": ", 0), 0u) << warning;
+  for (const char* part : {"1 KHR_lights_punctual lamp (\"Light\")", "emissive meshes",
+                           "emissiveFactor", "KHR_materials_emissive_strength"}) {
+    EXPECT_NE(warning.find(part), std::string::npos) << part << " in " << warning;
+  }
+  EXPECT_EQ(printed, "pathway: warning: " + warning + "\n");
+}
+
+TEST(GltfWarnings, UnnamedLampsAreNamedByTypeAndIndex) {
+  const std::string path = writeQuadFile("lamps", R"([{"mesh": 0}])",
+                                         R"(, "extensionsRequired": ["KHR_lights_punctual"],
+      "extensionsUsed": ["KHR_lights_punctual"],
+      "extensions": {"KHR_lights_punctual": {"lights": [
+          {"name": "Key", "type": "directional"},
+          {"type": "spot", "spot": {}}]}})");
+  const Scene scene = loadScene(path);
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  EXPECT_NE(scene.warnings[0].find("2 KHR_lights_punctual lamps (\"Key\", spot light 1)"),
+            std::string::npos)
+      << scene.warnings[0];
+}
+
+TEST(GltfWarnings, StrictLoadingStillIgnoresLampsThatAreNotRequired) {
+  const Scene scene = loadScene(kCases + "unsupported_features.gltf", {/*strict=*/true});
+  EXPECT_EQ(scene.triangleCount(), 2u);
+  int naming = 0;
+  for (const std::string& warning : scene.warnings)
+    naming += warning.find("KHR_lights_punctual") != std::string::npos;
+  EXPECT_EQ(naming, 1);
+}
+
 // --- Malformed files ------------------------------------------------------------------------
 
 struct MalformedCase {
@@ -438,6 +486,27 @@ INSTANTIATE_TEST_SUITE_P(
     [](const testing::TestParamInfo<MalformedCase>& info) {
       return info.param.file.substr(0, info.param.file.find('.'));
     });
+
+TEST(GltfErrors, StrictLoadingRefusesRequiredLamps) {
+  const std::string path = kCases + "required_lamp.gltf";
+  testing::internal::CaptureStderr();
+  const std::string message = loadError(path, {/*strict=*/true});
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+  EXPECT_EQ(message.rfind(path + ": ", 0), 0u) << message;
+  EXPECT_NE(message.find("requires extension KHR_lights_punctual"), std::string::npos) << message;
+  EXPECT_NE(message.find("without --strict"), std::string::npos) << message;
+}
+
+TEST(GltfErrors, OtherRequiredExtensionsAreRefusedInBothModes) {
+  const std::string path = kCases + "required_extension.gltf";
+  for (const bool strict : {false, true}) {
+    SCOPED_TRACE(strict ? "strict" : "default");
+    const std::string message = loadError(path, {strict});
+    EXPECT_NE(message.find("requires extension KHR_draco_mesh_compression"), std::string::npos)
+        << message;
+    EXPECT_EQ(message.find("--strict"), std::string::npos) << message;
+  }
+}
 
 TEST(GltfErrors, MissingFileIsNamed) {
   const std::string path = kCases + "does_not_exist.gltf";

@@ -42,9 +42,32 @@ namespace {
 
 const char* const kSupportedExtensions[] = {"KHR_materials_emissive_strength"};
 
+// Blender's exporter lists this one in extensionsRequired for any scene with a lamp, yet the
+// meshes load fine without it, so only strict loading refuses it.
+const char* const kLamps = "KHR_lights_punctual";
+
 bool isSupported(const std::string& extension) {
   return std::find(std::begin(kSupportedExtensions), std::end(kSupportedExtensions), extension) !=
          std::end(kSupportedExtensions);
+}
+
+bool lists(const std::vector<std::string>& extensions, const std::string& extension) {
+  return std::find(extensions.begin(), extensions.end(), extension) != extensions.end();
+}
+
+// One warning for all the lamps, naming them and what to use instead, so that a Blender user
+// knows why the render is dark.
+std::string lampWarning(const std::vector<tinygltf::Light>& lights) {
+  std::string names;
+  for (size_t i = 0; i < lights.size(); ++i) {
+    if (i > 0) names += ", ";
+    names += lights[i].name.empty() ? lights[i].type + " light " + std::to_string(i)
+                                    : "\"" + lights[i].name + "\"";
+  }
+  return "ignoring " + std::to_string(lights.size()) + " " + kLamps + " lamp" +
+         (lights.size() == 1 ? "" : "s") + (names.empty() ? "" : " (" + names + ")") +
+         ": Pathway lights a scene only with emissive meshes (a material's emissiveFactor, "
+         "optionally scaled by KHR_materials_emissive_strength)";
 }
 
 // tinygltf hands an image's bufferView bytes to the decoder without checking that the view lies
@@ -121,14 +144,18 @@ tinygltf::Model parseFile(const std::string& path, Diagnostics& diagnostics) {
   return model;
 }
 
-void checkFileWideFeatures(const tinygltf::Model& model, Diagnostics& diagnostics) {
+void checkFileWideFeatures(const tinygltf::Model& model, const SceneLoadOptions& options,
+                           Diagnostics& diagnostics) {
   for (const std::string& extension : model.extensionsRequired) {
+    if (extension == kLamps && !options.strict) continue;  // warned about below
     if (!isSupported(extension)) {
-      diagnostics.fail("requires extension " + extension + ", which is not supported");
+      diagnostics.fail(
+          "requires extension " + extension + ", which is not supported" +
+          (extension == kLamps ? " (without --strict its lamps would be ignored)" : ""));
     }
   }
   for (const std::string& extension : model.extensionsUsed) {
-    if (!isSupported(extension)) {
+    if (!isSupported(extension) && extension != kLamps) {
       diagnostics.warnOnce(extension, "ignoring extension " + extension + " (not supported)");
     }
   }
@@ -136,10 +163,11 @@ void checkFileWideFeatures(const tinygltf::Model& model, Diagnostics& diagnostic
     diagnostics.warnOnce("animations", "ignoring animations (not supported)");
   }
   if (!model.skins.empty()) diagnostics.warnOnce("skins", "ignoring skins (not supported)");
-  // Same key as the extensionsUsed entry, which a sloppy exporter may have left out.
-  if (!model.lights.empty()) {
-    diagnostics.warnOnce("KHR_lights_punctual",
-                         "ignoring extension KHR_lights_punctual (not supported)");
+  // One warning whether the file lists the extension as used, required, both, or (a sloppy
+  // exporter) not at all.
+  if (!model.lights.empty() || lists(model.extensionsUsed, kLamps) ||
+      lists(model.extensionsRequired, kLamps)) {
+    diagnostics.warnOnce(kLamps, lampWarning(model.lights));
   }
 }
 
@@ -319,10 +347,10 @@ void finish(Scene& scene, Diagnostics& diagnostics) {
 }  // namespace
 }  // namespace gltf
 
-Scene loadScene(const std::string& path) {
+Scene loadScene(const std::string& path, const SceneLoadOptions& options) {
   gltf::Diagnostics diagnostics(path);
   const tinygltf::Model model = gltf::parseFile(path, diagnostics);
-  gltf::checkFileWideFeatures(model, diagnostics);
+  gltf::checkFileWideFeatures(model, options, diagnostics);
   const tinygltf::Scene* chosen = gltf::chooseScene(model, diagnostics);
 
   Scene scene;

@@ -12,12 +12,15 @@
 // (other textures, metallicFactor != 0, alpha modes, animations, skins, morph targets, vertex
 // colours, orthographic cameras, other primitive modes, texture wrap modes, other extensions)
 // earns one warning per feature per file, printed as "pathway: warning: <message>" once the load
-// succeeds and kept in Scene::warnings.
+// succeeds and kept in Scene::warnings. KHR_lights_punctual lamps are ignored with one warning
+// that names them, even when extensionsRequired lists the extension (Blender's exporter does so
+// for any scene with a lamp): Pathway's only lights are emissive meshes.
 //
 // What fails: anything malformed or unsupported that would change the geometry (bad JSON, missing
 // buffers, accessors reading past their data, indices out of range, non-finite positions, sparse
-// accessors, a required extension we lack, a scene without triangles) throws one PathwayError
-// naming the file and the problem; nothing is printed and no partial scene escapes.
+// accessors, a required extension we lack other than KHR_lights_punctual, a scene without
+// triangles) throws one PathwayError naming the file and the problem; nothing is printed and no
+// partial scene escapes. SceneLoadOptions::strict also refuses a required KHR_lights_punctual.
 #pragma once
 
 #include <string>
@@ -26,6 +29,13 @@
 
 namespace pathway {
 
-Scene loadScene(const std::string& path);
+struct SceneLoadOptions {
+  // Refuse a file whose extensionsRequired lists KHR_lights_punctual instead of loading it without
+  // its lamps, for users who would rather fix the file than render a scene lit differently
+  // (the CLI's --strict).
+  bool strict = false;
+};
+
+Scene loadScene(const std::string& path, const SceneLoadOptions& options = {});
 
 }  // namespace pathway

@@ -5,7 +5,8 @@
 
 Every case is a one- or two-triangle scene unless README.md says otherwise. After writing, the
 script reads every file back with scenes/gltf_check.py: the valid cases must load (triangle
-counts, hierarchy sidecars), each malformed case must fail for the reason it was made for.
+counts, hierarchy sidecars) as the C++ loader loads them by default, those in STRICT_ERRORS must
+fail strict loading, each malformed case must fail for the reason it was made for.
 cases.json records the outcome the C++ loader should reproduce.
 """
 
@@ -245,6 +246,21 @@ def unsupported_features():
     return d.finish(), {}
 
 
+def required_lamp():
+    """The quad and a point lamp as Blender exports them: extensionsUsed and extensionsRequired
+    both list KHR_lights_punctual, and node "Lamp" holds light "Light". Loads without the lamp,
+    with one warning naming it; strict loading refuses the file."""
+    d = quad_doc()
+    d.doc["extensionsUsed"] = ["KHR_lights_punctual"]
+    d.doc["extensionsRequired"] = ["KHR_lights_punctual"]
+    d.doc["extensions"] = {"KHR_lights_punctual": {"lights": [
+        {"name": "Light", "type": "point", "color": [1.0, 1.0, 1.0], "intensity": 1000.0}]}}
+    d.doc["scenes"][0]["nodes"] = [0, 1]
+    d.doc["nodes"].append({"name": "Lamp", "translation": [0.5, 0.5, 2.0],
+                           "extensions": {"KHR_lights_punctual": {"light": 0}}})
+    return d.finish(), {}
+
+
 # --------------------------------------------------------------------------------------------
 # Malformed cases (each must make the loader throw one PathwayError)
 # --------------------------------------------------------------------------------------------
@@ -344,6 +360,7 @@ VALID = {
     "camera.gltf": camera,
     "emissive_strength.gltf": emissive_strength,
     "unsupported_features.gltf": unsupported_features,
+    "required_lamp.gltf": required_lamp,
 }
 MALFORMED = {  # file -> (maker, what gltf_check must complain about, reason for cases.json)
     "accessor_out_of_range.gltf": (accessor_out_of_range, "runs past its bufferView",
@@ -359,7 +376,11 @@ MALFORMED = {  # file -> (maker, what gltf_check must complain about, reason for
                                 "extensionsRequired lists KHR_draco_mesh_compression"),
 }
 WARNINGS = {"unsupported_features.gltf": ["normalTexture", "animations", "skins",
-                                          "KHR_lights_punctual", "primitive mode 1 (LINES)"]}
+                                          "KHR_lights_punctual", "primitive mode 1 (LINES)"],
+            "required_lamp.gltf": ["KHR_lights_punctual"]}
+# Valid files that strict loading refuses: file -> (what gltf_check must complain about, reason)
+STRICT_ERRORS = {"required_lamp.gltf": ("required extension",
+                                        "extensionsRequired lists KHR_lights_punctual")}
 
 
 def main():
@@ -379,9 +400,9 @@ def main():
     good = json_text(quad_doc().finish())
     write("bad_json.gltf", good[:len(good) // 2])  # truncated mid-document
 
-    # Read everything back.
+    # Read everything back, the way the C++ loader does by default (not strict).
     for name in list(VALID) + ["binary.glb"]:
-        scene = read_scene(os.path.join(HERE, name))
+        scene = read_scene(os.path.join(HERE, name), strict=False)
         count = sum(p["count"] for p in scene["parts"])
         outcomes[name] = {"triangles": count}
         if name in WARNINGS:
@@ -397,10 +418,20 @@ def main():
                 " ".join("(%g %g %g)" % p for p in got), worst))
             if worst > 1e-9:
                 raise SystemExit("%s: world positions differ from the expected ones" % name)
+    for name, (message, reason) in STRICT_ERRORS.items():
+        try:
+            read_scene(os.path.join(HERE, name), strict=True)
+        except GltfError as e:
+            if message not in str(e):
+                raise SystemExit("%s failed strict loading for the wrong reason: %s" % (name, e))
+            print("%-28s strict fails  %s" % (name, e))
+            outcomes[name]["strict"] = {"error": reason}
+        else:
+            raise SystemExit("%s loaded strictly but should not have" % name)
     failing = [(n, m, r) for n, (_, m, r) in MALFORMED.items()]
     for name, message, reason in failing + [("bad_json.gltf", "bad JSON", "truncated JSON")]:
         try:
-            read_scene(os.path.join(HERE, name))
+            read_scene(os.path.join(HERE, name), strict=False)
         except GltfError as e:
             if message not in str(e):
                 raise SystemExit("%s failed for the wrong reason: %s" % (name, e))
