@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "core/error.h"
-#include "render/render_job.h"
+#include "render/render_session.h"
 #include "sampling/pcg32.h"
 #include "scene/gltf_loader.h"
 
@@ -111,8 +111,8 @@ RaySets makeRays(const Scene& scene, const RayTracer& tracer, int width, int hei
       const Ray ray = camera.generateRay(Vec2(x + rng.nextFloat(), y + rng.nextFloat()));
       sets.primary.push_back(ray);
       if (const auto hit = tracer.intersect(ray, RayKind::Primary, ignored))
-        sets.incoherent.push_back(RayTracer::spawnRay(
-            *hit, cosineDirection(hit->normal, rng.nextFloat(), rng.nextFloat())));
+        sets.incoherent.push_back(
+            hit->spawnRay(cosineDirection(hit->normal, rng.nextFloat(), rng.nextFloat())));
     }
   }
   return sets;
@@ -121,12 +121,13 @@ RaySets makeRays(const Scene& scene, const RayTracer& tracer, int width, int hei
 // A diffuse bounce through the renderer: camera ray, then one cosine-distributed closest-hit ray.
 class DiffuseBounceIntegrator : public Integrator {
  public:
-  Color Li(const Ray& cameraRay, SampleStream& samples, RenderContext& context) const override {
-    const auto hit = context.tracer.intersect(cameraRay, RayKind::Primary, context.counters);
+  Color Li(const Ray& cameraRay, SampleStream& samples,
+           const RenderContext& context) const override {
+    const auto hit = context.intersect(cameraRay, RayKind::Primary);
     if (!hit) return Color(0.0f);
     const Vec2 u = samples.next2D();
-    const Ray bounce = RayTracer::spawnRay(*hit, cosineDirection(hit->normal, u.x, u.y));
-    const auto next = context.tracer.intersect(bounce, RayKind::Secondary, context.counters);
+    const Ray bounce = hit->spawnRay(cosineDirection(hit->normal, u.x, u.y));
+    const auto next = context.intersect(bounce, RayKind::Secondary);
     return next ? next->albedo : Color(1.0f);
   }
 };
@@ -136,7 +137,8 @@ const bool registered = registerIntegrator(
      Variant::Reference,
      "benchmark: camera ray + one diffuse bounce",
      {},
-     [](const ParamValues&, const Scene&) { return std::make_unique<DiffuseBounceIntegrator>(); }});
+     SamplerType::Independent,
+     [](const IntegratorSetup&) { return std::make_unique<DiffuseBounceIntegrator>(); }});
 
 // Steady-state rate of the renderer: one warm-up pass (first touch of the film and tile memory),
 // then the best of `repeats` timed passes, `spp` samples per pixel each.
@@ -144,14 +146,15 @@ double rendererSeconds(const Scene& scene, const RayTracer& tracer, const std::s
                        const std::map<std::string, std::string>& params, int width, uint32_t spp,
                        int repeats, uint64_t* raysPerPass) {
   const IntegratorInfo& info = findIntegrator(name);
-  const auto integrator = info.create(resolveParams(name, info.params, params), scene);
-  const Camera camera(scene, width, width);
-  RenderSettings settings;
-  settings.width = settings.height = width;
-  settings.samplesPerPixel = spp * (1 + repeats);
-  settings.samplesPerPass = spp;
-  settings.sampler = info.defaultSampler;
-  Renderer renderer(tracer, camera, *integrator, filterFunctions(info.variant), settings);
+  RenderRecipe recipe;
+  recipe.integrator = name;
+  recipe.params = resolveParams(name, info.params, params);
+  recipe.settings.width = recipe.settings.height = width;
+  recipe.settings.samplesPerPixel = spp * (1 + repeats);
+  recipe.settings.samplesPerPass = spp;
+  recipe.settings.sampler = info.defaultSampler;
+  RenderSession session(tracer, Camera(scene, width, width), recipe);
+  Renderer& renderer = session.renderer();
   renderer.renderPass();
   double best = 1e30;
   for (int i = 0; i < repeats; ++i) {
@@ -225,14 +228,15 @@ std::vector<LoggedRay> recordRays(const Scene& scene, RayTracer& tracer, const s
                                   uint32_t spp) {
   std::vector<LoggedRay> log;
   tracer.setRayLog(&log);
-  RenderRequest request;
-  request.integrator = name;
-  request.params = params;
-  request.settings.width = request.settings.height = width;
-  request.settings.samplesPerPixel = request.settings.samplesPerPass = spp;
-  request.settings.threads = 1;
-  request.settings.sampler = findIntegrator(name).defaultSampler;
-  runRender(scene, tracer, request);
+  const IntegratorInfo& info = findIntegrator(name);
+  RenderRecipe recipe;
+  recipe.integrator = name;
+  recipe.params = resolveParams(name, info.params, params);
+  recipe.settings.width = recipe.settings.height = width;
+  recipe.settings.samplesPerPixel = recipe.settings.samplesPerPass = spp;
+  recipe.settings.threads = 1;
+  recipe.settings.sampler = info.defaultSampler;
+  runRender(tracer, Camera(scene, width, width), recipe);
   tracer.setRayLog(nullptr);
   return log;
 }
@@ -262,7 +266,7 @@ int benchStages(const std::string& scenePath, int width, int repeats) {
   };
   const Case cases[] = {
       {"stage1@ref", {}, 4}, {"stage2@ref", {}, 2}, {"stage3@ref", {}, 4},
-      {"stage4@ref", {}, 1}, {"stage5@ref", {}, 2}, {"stage5@ref", {{"nee", "0"}}, 2},
+      {"stage4@ref", {}, 1}, {"stage5@ref", {}, 2}, {"stage5@ref", {{"nee", "off"}}, 2},
   };
   std::printf("%-22s %14s %12s %12s %8s\n", "integrator", "rays/sample", "Mrays/s", "raw Mrays/s",
               "ratio");
@@ -280,15 +284,16 @@ int benchStages(const std::string& scenePath, int width, int repeats) {
   }
 
   // The fixed workload: stage 5 at 256x256, 64 spp, 5 bounces, as the CLI runs it.
-  RenderRequest request;
-  request.integrator = "stage5@ref";
-  request.params = {{"max-depth", "5"}};
-  request.settings.width = request.settings.height = 256;
-  request.settings.samplesPerPixel = 64;
-  request.settings.samplesPerPass = 4;
+  RenderRecipe recipe;
+  recipe.integrator = "stage5@ref";
+  recipe.params = resolveParams(recipe.integrator, findIntegrator(recipe.integrator).params,
+                                {{"max-depth", "5"}});
+  recipe.settings.width = recipe.settings.height = 256;
+  recipe.settings.samplesPerPixel = 64;
+  recipe.settings.samplesPerPass = 4;
   double wall = 0.0;
   RenderResult result;
-  wall = secondsOf([&] { result = runRender(scene, tracer, request); });
+  wall = secondsOf([&] { result = runRender(tracer, recipe); });
   std::printf(
       "\nstage5@ref 256x256, 64 spp, max-depth 5: %.2f s wall, %.2f Mrays/s "
       "(%llu rays: %llu primary, %llu secondary, %llu shadow)\n",

@@ -70,6 +70,47 @@ TEST_F(Cli, UnknownParameterIsNamed) {
   expectRefused("render " + kScene + " -p bounces", "name=value");
 }
 
+TEST_F(Cli, ParametersAreReadByTheirKind) {
+  // A switch is on/off, a choice takes its options' names; numbers for them are refused.
+  expectRefused("render " + kScene + " -i stage5 -p nee=2", "on or off");
+  expectRefused("render " + kScene + " -i stage5 -p light-pick=1", "area or power");
+  expectRefused("render " + kScene + " -i stage2 -p ao-rays=5000", "[1, 1024]");
+  const Outcome outcome =
+      runPathway("render " + kScene + " -i stage5 -p nee=off -p light-pick=area --width 8 " +
+                 "--height 8 --spp 1 -q -o " + path("a.exr"));
+  ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+  EXPECT_EQ(readImageFile(path("a.exr")).metadata.at("pathway:params"),
+            "max-depth=5 rr-depth=3 nee=off light-pick=area");
+}
+
+TEST_F(Cli, EarlierStagesCanComeFromTheReference) {
+  expectRefused("render " + kScene + " -i stage3 --earlier-stages theirs", "own or reference");
+  const Outcome outcome =
+      runPathway("render " + kScene + " -i stage3 --earlier-stages reference --width 8 " +
+                 "--height 8 --spp 1 -q -o " + path("a.exr"));
+#ifdef PATHWAY_HAS_SOLUTIONS
+  ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+  EXPECT_EQ(readImageFile(path("a.exr")).metadata.at("pathway:earlierStages"), "reference");
+#else
+  // A handout has no reference stages: the message says which one is missing.
+  EXPECT_EQ(outcome.exitCode, 1);
+  EXPECT_NE(outcome.output.find("the reference stage"), std::string::npos) << outcome.output;
+  EXPECT_NE(outcome.output.find("is not built into this program"), std::string::npos)
+      << outcome.output;
+#endif
+}
+
+TEST_F(Cli, LampsAreIgnoredWithAWarningUnlessStrict) {
+  const std::string lamp = std::string(PATHWAY_TEST_DATA_DIR) + "/gltf/required_lamp.gltf";
+  const Outcome loose =
+      runPathway("render " + lamp + " --width 8 --height 8 --spp 1 -q -o " + path("a.png"));
+  EXPECT_EQ(loose.exitCode, 0) << loose.output;
+  EXPECT_NE(loose.output.find("warning"), std::string::npos) << loose.output;
+  EXPECT_NE(loose.output.find("emissive meshes"), std::string::npos) << loose.output;
+  fs::remove(path("a.png"));
+  expectRefused("render " + lamp + " --strict", "KHR_lights_punctual");
+}
+
 TEST_F(Cli, OutOfRangeSettingsAreRefused) {
   expectRefused("render " + kScene + " --spp 0", "--spp");
   expectRefused("render " + kScene + " --width -5", "--width");

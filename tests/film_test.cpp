@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "film/pixel_filter.h"
-#include "render/render_job.h"
+#include "render/render_session.h"
 #include "stage_under_test.h"
 #include "test_scenes.h"
 
@@ -16,14 +16,14 @@ namespace {
 
 TEST(Film, SplatAddsTheFilterWeightToEveryPixelInReach) {
   PATHWAY_REQUIRE_SOLUTIONS();
-  const FilterFunctions& reference = filterFunctions(test::variantUnderTest());
+  const Stage1Functions& stage1 = test::stage1UnderTest();
   for (FilterType type :
        {FilterType::Box, FilterType::Tent, FilterType::MitchellNetravali, FilterType::Gaussian}) {
-    const PixelFilter filter(type, naturalFilterRadius(type), reference);
+    const PixelFilter filter(type, naturalFilterRadius(type), stage1.profiles);
     FilmBlock block(16, 16, 0, 0, 16, 16);
     const Vec2 p(7.3f, 8.9f);
     const Color radiance(2.0f, 3.0f, 4.0f);
-    reference.splat(block, p, radiance, filter);
+    stage1.splat(block, p, radiance, filter);
     for (int y = 0; y < 16; ++y) {
       for (int x = 0; x < 16; ++x) {
         const float expected = filter.evaluate(p.x - (x + 0.5f), p.y - (y + 0.5f));
@@ -63,14 +63,14 @@ TEST(Film, ConstantSceneComesBackExactlyForEveryFilterAndSampleCount) {
   for (FilterType type :
        {FilterType::Box, FilterType::Tent, FilterType::MitchellNetravali, FilterType::Gaussian}) {
     for (uint32_t spp : {1u, 2u, 4u}) {
-      RenderRequest request;
-      request.integrator = test::stage("stage1");
-      request.settings.width = 48;
-      request.settings.height = 32;
-      request.settings.samplesPerPixel = spp;
-      request.settings.filter = type;
-      request.settings.seed = 7;
-      const RenderResult result = runRender(scene, tracer, request);
+      RenderRecipe recipe;
+      recipe.integrator = test::stage(1);
+      recipe.settings.width = 48;
+      recipe.settings.height = 32;
+      recipe.settings.samplesPerPixel = spp;
+      recipe.settings.filter = type;
+      recipe.settings.seed = 7;
+      const RenderResult result = runRender(tracer, recipe);
       size_t zeroPixels = 0;
       for (const Color& pixel : result.images.color.pixels) {
         ASSERT_TRUE(isFinite(pixel));

@@ -35,8 +35,8 @@ TEST(RayTracer, OpenPlaneHasNoSelfIntersectionAtAnyScaleOrOffset) {
         ++hits;
         const Vec3 direction = cosineAroundUp(rng.nextFloat(), rng.nextFloat());
         // Both query kinds, with an unbounded and with an AO-like bounded segment.
-        const Ray ray = RayTracer::spawnRay(*hit, direction);
-        const Ray shortRay = RayTracer::spawnRay(*hit, direction, 0.5f * scale);
+        const Ray ray = hit->spawnRay(direction);
+        const Ray shortRay = hit->spawnRay(direction, 0.5f * scale);
         if (tracer.occluded(ray, RayKind::Shadow, counters) ||
             tracer.occluded(shortRay, RayKind::Secondary, counters) ||
             tracer.intersect(ray, RayKind::Secondary, counters))
@@ -107,7 +107,7 @@ TEST(RayTracer, ShadowRayToALightPointIsNotBlockedByEitherEnd) {
     const auto hit = tracer.intersect({Vec3(0, 0.5f, 0), down}, RayKind::Primary, counters);
     ASSERT_TRUE(hit);
     const Vec3 target(2 * rng.nextFloat() - 1, 1, 2 * rng.nextFloat() - 1);
-    const Ray shadow = RayTracer::spawnRayTo(*hit, target, Vec3(0, -1, 0));
+    const Ray shadow = hit->spawnRayTo(target, Vec3(0, -1, 0));
     EXPECT_FALSE(tracer.occluded(shadow, RayKind::Shadow, counters)) << i;
     // The same segment pushed past the target does hit the ceiling: the test can fail.
     Ray tooLong = shadow;

@@ -1,59 +1,101 @@
-// The integrator registry: names, declarations, and parameter checking.
+// The integrator registry and the stage kit: names derived from the stage and the variant,
+// parameters declared once by kind and checked against their declarations, and kits that mix
+// variants (a student's stage on the reference's earlier stages).
 #include <gtest/gtest.h>
 
 #include "core/error.h"
 #include "render/integrator_registry.h"
+#include "render/stage_catalog.h"
 #include "stage_under_test.h"
 
 namespace pathway {
 namespace {
 
-TEST(Registry, EveryStageHasAStudentVersionAndTheReferenceDeclaresTheSameParameters) {
-  for (int stage = 1; stage <= 5; ++stage) {
-    const std::string name = "stage" + std::to_string(stage);
-    const IntegratorInfo& student = findIntegrator(name);
-    EXPECT_EQ(student.stage, stage);
-    EXPECT_EQ(student.variant, Variant::Student);
-#ifdef PATHWAY_HAS_SOLUTIONS
-    // Skeleton and solution are two copies of one file: their declarations must not drift.
-    const IntegratorInfo& reference = findIntegrator(name + "@ref");
-    EXPECT_EQ(reference.variant, Variant::Reference);
-    EXPECT_EQ(reference.summary, student.summary);
-    EXPECT_EQ(reference.defaultSampler, student.defaultSampler);
-    ASSERT_EQ(reference.params.size(), student.params.size()) << name;
-    for (size_t i = 0; i < student.params.size(); ++i) {
-      const ParamSpec &a = student.params[i], &b = reference.params[i];
-      EXPECT_EQ(a.name, b.name);
-      EXPECT_EQ(a.defaultValue, b.defaultValue);
-      EXPECT_EQ(a.minValue, b.minValue);
-      EXPECT_EQ(a.maxValue, b.maxValue);
-      EXPECT_EQ(a.isInteger, b.isInteger);
-      EXPECT_EQ(a.help, b.help);
-    }
-#endif
-    for (const ParamSpec& spec : student.params) {
-      EXPECT_LE(spec.minValue, spec.defaultValue) << name << " " << spec.name;
-      EXPECT_LE(spec.defaultValue, spec.maxValue) << name << " " << spec.name;
-      EXPECT_FALSE(spec.help.empty()) << name << " " << spec.name;
-    }
+// The message of the PathwayError `action` throws, or "" when it throws none.
+template <typename Action>
+std::string errorOf(Action action) {
+  try {
+    action();
+  } catch (const PathwayError& error) {
+    return error.what();
   }
+  return "";
 }
 
-TEST(Registry, ParametersAreCheckedAgainstTheirDeclarations) {
-  const std::vector<ParamSpec> specs = {{"rays", 4, 1, 16, true, "rays"},
-                                        {"distance", 0.5, 0.0, 2.0, false, "distance"}};
+TEST(Registry, EveryStageRegistersUnderItsDeclaredNameSummaryAndParameters) {
+  for (int stage = 1; stage <= kStageCount; ++stage) {
+    const StageDeclaration& declared = stageDeclaration(stage);
+    EXPECT_EQ(declared.number, stage);
+    EXPECT_EQ(declared.name, "stage" + std::to_string(stage));
+    for (Variant variant : {Variant::Student, Variant::Reference}) {
+      const IntegratorInfo* info = findStageIntegrator(stage, variant);
+      if (variant == Variant::Reference && !test::kHaveSolutions) {
+        EXPECT_EQ(info, nullptr);
+        continue;
+      }
+      ASSERT_NE(info, nullptr) << declared.name << " " << variantName(variant);
+      EXPECT_EQ(info->name, variant == Variant::Student ? declared.name : declared.name + "@ref");
+      EXPECT_EQ(info->stage, stage);
+      EXPECT_EQ(info->variant, variant);
+      EXPECT_EQ(info->summary, declared.summary);
+      EXPECT_EQ(info->defaultSampler, declared.defaultSampler);
+      ASSERT_EQ(info->params.size(), declared.params.size());
+      for (size_t i = 0; i < declared.params.size(); ++i)
+        EXPECT_EQ(info->params[i].name, declared.params[i].name);
+    }
+    for (const ParamSpec& spec : declared.params) {
+      EXPECT_TRUE(spec.accepts(spec.defaultValue)) << declared.name << " " << spec.name;
+      EXPECT_FALSE(spec.help.empty()) << declared.name << " " << spec.name;
+    }
+  }
+  EXPECT_NE(errorOf([] { stageDeclaration(6); }).find("no stage 6"), std::string::npos);
+}
+
+TEST(Registry, ParametersAreDeclaredByKind) {
+  const StageDeclaration& pathTracing = stageDeclaration(5);
+  auto find = [&](const std::string& name) -> const ParamSpec& {
+    for (const ParamSpec& spec : pathTracing.params)
+      if (spec.name == name) return spec;
+    throw PathwayError("no " + name);
+  };
+  EXPECT_EQ(find("max-depth").kind, ParamKind::Integer);
+  EXPECT_EQ(find("nee").kind, ParamKind::Switch);
+  EXPECT_EQ(find("light-pick").kind, ParamKind::Choice);  // a choice, not a 0/1 switch
+  EXPECT_EQ(find("light-pick").options, (std::vector<std::string>{"area", "power"}));
+  EXPECT_EQ(find("light-pick").format(find("light-pick").defaultValue), "power");
+  EXPECT_EQ(stageDeclaration(2).params[1].kind, ParamKind::Real);
+}
+
+TEST(Registry, ParameterValuesAreCheckedAgainstTheirDeclarations) {
+  const std::vector<ParamSpec> specs = {
+      ParamSpec::integer("rays", 4, 1, 16, "rays"),
+      ParamSpec::real("distance", 0.5, 0.0, 2.0, "distance"),
+      ParamSpec::toggle("shadows", true, "shadows"),
+      ParamSpec::choice("pick", "power", {"area", "power"}, "pick"),
+  };
   const ParamValues defaults = resolveParams("x", specs, {});
   EXPECT_EQ(defaults.integer("rays"), 4);
   EXPECT_EQ(defaults.number("distance"), 0.5);
-  const ParamValues given = resolveParams("x", specs, {{"rays", "16"}, {"distance", "2"}});
+  EXPECT_TRUE(defaults.flag("shadows"));
+  EXPECT_EQ(defaults.choice("pick"), "power");
+  EXPECT_EQ(defaults.describe(), "rays=4 distance=0.5 shadows=on pick=power");
+
+  const ParamValues given = resolveParams(
+      "x", specs, {{"rays", "16"}, {"distance", "2"}, {"shadows", "off"}, {"pick", "area"}});
   EXPECT_EQ(given.integer("rays"), 16);
+  EXPECT_FALSE(given.flag("shadows"));
+  EXPECT_EQ(given.choice("pick"), "area");
+  // What describe() writes reads back to the same values.
+  std::map<std::string, std::string> text;
+  for (const char* assignment : {"rays=16", "distance=2", "shadows=off", "pick=area"})
+    text.insert(splitParamAssignment(assignment));
+  EXPECT_EQ(resolveParams("x", specs, text), given);
+  EXPECT_TRUE(resolveParams("x", specs, {{"shadows", "0"}}) ==
+              resolveParams("x", specs, {{"shadows", "false"}}));
+
   auto refuses = [&](const std::map<std::string, std::string>& given, const std::string& needle) {
-    try {
-      resolveParams("x", specs, given);
-    } catch (const PathwayError& error) {
-      return std::string(error.what()).find(needle) != std::string::npos;
-    }
-    return false;
+    const std::string message = errorOf([&] { resolveParams("x", specs, given); });
+    return !message.empty() && message.find(needle) != std::string::npos;
   };
   EXPECT_TRUE(refuses({{"rays", "17"}}, "out of range"));
   EXPECT_TRUE(refuses({{"rays", "0"}}, "[1, 16]"));
@@ -61,17 +103,52 @@ TEST(Registry, ParametersAreCheckedAgainstTheirDeclarations) {
   EXPECT_TRUE(refuses({{"rays", "many"}}, "'many'"));
   EXPECT_TRUE(refuses({{"distance", "nan"}}, "must be a number"));
   EXPECT_TRUE(refuses({{"distance", "inf"}}, "must be a number"));
+  EXPECT_TRUE(refuses({{"shadows", "2"}}, "on or off"));
+  EXPECT_TRUE(refuses({{"pick", "1"}}, "area or power"));
+  EXPECT_TRUE(refuses({{"pick", "volume"}}, "'volume'"));
   EXPECT_TRUE(refuses({{"depth", "3"}}, "no parameter 'depth'"));
   EXPECT_EQ(splitParamAssignment("a=b").second, "b");
   EXPECT_THROW(splitParamAssignment("=b"), PathwayError);
+
+  // Numbers set directly (the viewer's widgets) are checked the same way, never clamped.
+  ParamValues values(specs);
+  EXPECT_NE(errorOf([&] { values.set("x", "rays", 17); }).find("[1, 16]"), std::string::npos);
+  EXPECT_NE(errorOf([&] { values.set("x", "pick", 2); }).find("area or power"), std::string::npos);
+  EXPECT_NE(errorOf([&] { values.set("x", "rays", 1.5); }), "");
+  EXPECT_EQ(values.integer("rays"), 4);  // unchanged by the refused values
 }
 
 TEST(Registry, UnknownNamesListTheKnownOnes) {
-  try {
-    findIntegrator("stage7");
-    FAIL();
-  } catch (const PathwayError& error) {
-    EXPECT_NE(std::string(error.what()).find("stage5"), std::string::npos) << error.what();
+  const std::string message = errorOf([] { findIntegrator("stage7"); });
+  EXPECT_NE(message.find("unknown integrator 'stage7'"), std::string::npos) << message;
+  EXPECT_NE(message.find("stage5"), std::string::npos) << message;
+}
+
+TEST(StageKit, EarlierStagesComeFromTheChosenVariantAndTheStageItselfFromItsOwn) {
+  // Your stage 3 on your own stages 1-2, or on the reference's.
+  const StageKit own(3, Variant::Student, EarlierStages::Own);
+  EXPECT_EQ(own.stage1Variant(), Variant::Student);
+  EXPECT_EQ(own.stage2Variant(), Variant::Student);
+  const StageKit mixed(3, Variant::Student, EarlierStages::Reference);
+  EXPECT_EQ(mixed.stage1Variant(), Variant::Reference);
+  EXPECT_EQ(mixed.stage2Variant(), Variant::Reference);
+  // Stage 2 graded alone: the reference's stage 1 filters it, stage 2 stays the student's.
+  const StageKit second(2, Variant::Student, EarlierStages::Reference);
+  EXPECT_EQ(second.stage1Variant(), Variant::Reference);
+  EXPECT_EQ(second.stage2Variant(), Variant::Student);
+  // Stage 1 has no earlier stage: it always splats with its own functions.
+  EXPECT_EQ(StageKit(1, Variant::Student, EarlierStages::Reference).stage1Variant(),
+            Variant::Student);
+  // The kits hand out the functions the stage files registered.
+  EXPECT_NO_THROW(own.stage1());
+  EXPECT_NO_THROW(own.stage2());
+  if (test::kHaveSolutions) {
+    EXPECT_NE(own.stage1().splat, mixed.stage1().splat);
+    EXPECT_NE(own.stage2().ambientOcclusionSample, mixed.stage2().ambientOcclusionSample);
+  } else {
+    // A handout has no reference: the kit names what is missing.
+    const std::string message = errorOf([&] { mixed.stage2(); });
+    EXPECT_NE(message.find("reference stage 2 is not built"), std::string::npos) << message;
   }
 }
 

@@ -6,17 +6,19 @@ namespace pathway::test {
 
 RenderResult render(const Scene& scene, const RenderSpec& spec) {
   const RayTracer tracer(scene);
-  RenderRequest request;
-  request.integrator = spec.integrator;
-  request.params = spec.params;
-  request.settings.width = spec.width;
-  request.settings.height = spec.height;
-  request.settings.samplesPerPixel = spec.spp;
-  request.settings.samplesPerPass = spec.spp;
-  request.settings.sampler = spec.sampler;
-  request.settings.seed = spec.seed;
-  request.settings.filter = FilterType::Box;
-  return runRender(scene, tracer, request);
+  const IntegratorInfo& info = findIntegrator(spec.integrator);
+  RenderRecipe recipe;
+  recipe.integrator = info.name;
+  recipe.params = resolveParams(info.name, info.params, spec.params);
+  recipe.earlierStages = spec.earlierStages;
+  recipe.settings.width = spec.width;
+  recipe.settings.height = spec.height;
+  recipe.settings.samplesPerPixel = spec.spp;
+  recipe.settings.samplesPerPass = spec.spp;
+  recipe.settings.sampler = spec.sampler;
+  recipe.settings.seed = spec.seed;
+  recipe.settings.filter = FilterType::Box;
+  return runRender(tracer, recipe);
 }
 
 Estimate meanOverPixels(const RenderResult& result, int channel,

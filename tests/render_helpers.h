@@ -6,7 +6,7 @@
 #include <map>
 #include <string>
 
-#include "render/render_job.h"
+#include "render/render_session.h"
 
 namespace pathway::test {
 
@@ -23,11 +23,12 @@ struct Estimate {
 
 struct RenderSpec {
   std::string integrator;
-  std::map<std::string, std::string> params;
+  std::map<std::string, std::string> params;  // as on the command line: "nee" -> "off"
   int width = 32, height = 32;
   uint32_t spp = 16;
   SamplerType sampler = SamplerType::Independent;
   uint64_t seed = 1;
+  EarlierStages earlierStages = EarlierStages::Own;
 };
 
 RenderResult render(const Scene& scene, const RenderSpec& spec);

@@ -8,7 +8,7 @@
 #include <numeric>
 #include <thread>
 
-#include "render/render_job.h"
+#include "render/render_session.h"
 #include "scene/gltf_loader.h"
 #include "stage_under_test.h"
 #include "test_scenes.h"
@@ -16,18 +16,26 @@
 namespace pathway {
 namespace {
 
-RenderRequest smallRequest(int threads, SamplerType sampler) {
-  RenderRequest request;
-  request.integrator = test::stage("stage1");
-  request.settings.width = 70;  // not a multiple of the tile size, on purpose
-  request.settings.height = 45;
-  request.settings.samplesPerPixel = 4;
-  request.settings.samplesPerPass = 2;
-  request.settings.filter = FilterType::MitchellNetravali;
-  request.settings.sampler = sampler;
-  request.settings.seed = 11;
-  request.settings.threads = threads;
-  return request;
+RenderRecipe smallRecipe(int threads, SamplerType sampler) {
+  RenderRecipe recipe;
+  recipe.integrator = test::stage(1);
+  recipe.settings.width = 70;  // not a multiple of the tile size, on purpose
+  recipe.settings.height = 45;
+  recipe.settings.samplesPerPixel = 4;
+  recipe.settings.samplesPerPass = 2;
+  recipe.settings.filter = FilterType::MitchellNetravali;
+  recipe.settings.sampler = sampler;
+  recipe.settings.seed = 11;
+  recipe.settings.threads = threads;
+  return recipe;
+}
+
+// An integrator of the stage under test at its default parameters.
+std::unique_ptr<Integrator> makeIntegrator(int stage, const Scene& scene,
+                                           const std::map<std::string, std::string>& params = {}) {
+  const IntegratorInfo& info = findIntegrator(test::stage(stage));
+  const StageKit kit = info.kit();
+  return info.create({resolveParams(info.name, info.params, params), kit, scene});
 }
 
 TEST(Renderer, SameSeedGivesBitIdenticalImagesForOneAndManyThreads) {
@@ -36,9 +44,9 @@ TEST(Renderer, SameSeedGivesBitIdenticalImagesForOneAndManyThreads) {
   const RayTracer tracer(scene);
   for (SamplerType sampler :
        {SamplerType::Independent, SamplerType::Stratified, SamplerType::Sobol}) {
-    const RenderResult one = runRender(scene, tracer, smallRequest(1, sampler));
+    const RenderResult one = runRender(tracer, smallRecipe(1, sampler));
     for (int threads : {2, 3, 8}) {
-      const RenderResult many = runRender(scene, tracer, smallRequest(threads, sampler));
+      const RenderResult many = runRender(tracer, smallRecipe(threads, sampler));
       ASSERT_EQ(one.images.color.pixels.size(), many.images.color.pixels.size());
       EXPECT_EQ(0, std::memcmp(one.images.color.pixels.data(), many.images.color.pixels.data(),
                                one.images.color.pixels.size() * sizeof(Color)))
@@ -48,9 +56,9 @@ TEST(Renderer, SameSeedGivesBitIdenticalImagesForOneAndManyThreads) {
                             one.images.variance.pixels.size() * sizeof(Color)));
     }
     // A different seed must change the image (otherwise the test above proves nothing).
-    RenderRequest other = smallRequest(1, sampler);
+    RenderRecipe other = smallRecipe(1, sampler);
     other.settings.seed = 12;
-    const RenderResult different = runRender(scene, tracer, other);
+    const RenderResult different = runRender(tracer, other);
     EXPECT_NE(0, std::memcmp(one.images.color.pixels.data(), different.images.color.pixels.data(),
                              one.images.color.pixels.size() * sizeof(Color)));
   }
@@ -60,7 +68,7 @@ TEST(Renderer, CountsOnePrimaryRayPerSample) {
   PATHWAY_REQUIRE_SOLUTIONS();
   const Scene scene = test::boxRoom();
   const RayTracer tracer(scene);
-  const RenderResult result = runRender(scene, tracer, smallRequest(2, SamplerType::Sobol));
+  const RenderResult result = runRender(tracer, smallRecipe(2, SamplerType::Sobol));
   const uint64_t samples = 70ull * 45 * 4;
   EXPECT_EQ(result.stats.counters.primary, samples);
   EXPECT_EQ(result.stats.counters.samples, samples);
@@ -68,9 +76,32 @@ TEST(Renderer, CountsOnePrimaryRayPerSample) {
   EXPECT_EQ(result.stats.samplesPerPixel, 4u);
 }
 
+// Grading one stage in isolation: the student's stage 2 on the reference's stage 1 splats with
+// the reference's filters, so its filter weights are the reference's to the bit.
+TEST(Renderer, EarlierStagesFromTheReferenceAreTheOnesThatRun) {
+  PATHWAY_REQUIRE_SOLUTIONS();
+  if (test::checkingStudentCode()) GTEST_SKIP() << "checks the framework, not your stages";
+  const Scene scene = test::boxRoom();
+  const RayTracer tracer(scene);
+  auto weights = [&](const std::string& integrator, EarlierStages earlier) {
+    RenderRecipe recipe = smallRecipe(1, SamplerType::Independent);
+    recipe.integrator = integrator;
+    recipe.earlierStages = earlier;
+    recipe.settings.filter = FilterType::Tent;
+    return runRender(tracer, recipe).images.weight.pixels;
+  };
+  const auto reference = weights("stage2@ref", EarlierStages::Own);
+  const auto mixed = weights("stage2", EarlierStages::Reference);
+  const auto own = weights("stage2", EarlierStages::Own);
+  ASSERT_EQ(reference.size(), mixed.size());
+  EXPECT_EQ(0, std::memcmp(reference.data(), mixed.data(), reference.size() * sizeof(Color)));
+  // The skeleton's own placeholder splat gives other weights: the choice is not a no-op.
+  EXPECT_NE(0, std::memcmp(reference.data(), own.data(), reference.size() * sizeof(Color)));
+}
+
 class NaNIntegrator : public Integrator {
  public:
-  Color Li(const Ray&, SampleStream& samples, RenderContext&) const override {
+  Color Li(const Ray&, SampleStream& samples, const RenderContext&) const override {
     return samples.next1D() < 0.5f ? Color(NAN) : Color(1.0f);
   }
 };
@@ -84,8 +115,7 @@ TEST(Renderer, DropsAndCountsNonFiniteSamples) {
   RenderSettings settings;
   settings.width = settings.height = 32;
   settings.samplesPerPixel = 8;
-  Renderer renderer(tracer, camera, integrator, filterFunctions(test::variantUnderTest()),
-                    settings);
+  Renderer renderer(tracer, camera, integrator, test::stage1UnderTest(), settings);
   renderer.renderAll();
   const RayCounters& c = renderer.stats().counters;
   EXPECT_EQ(c.invalidSamples + c.samples, 32u * 32 * 8);
@@ -101,12 +131,11 @@ TEST(Renderer, CancelledPassLeavesTheFilmUntouched) {
   const Scene scene = test::boxRoom();
   const RayTracer tracer(scene);
   const Camera camera(scene, 32, 32);
-  const auto integrator = findIntegrator(test::stage("stage1")).create(ParamValues{}, scene);
+  const auto integrator = makeIntegrator(1, scene);
   RenderSettings settings;
   settings.width = settings.height = 32;
   settings.samplesPerPixel = 4;
-  Renderer renderer(tracer, camera, *integrator, filterFunctions(test::variantUnderTest()),
-                    settings);
+  Renderer renderer(tracer, camera, *integrator, test::stage1UnderTest(), settings);
   ASSERT_TRUE(renderer.renderPass());
   const Image before = renderer.film().develop();
   const std::atomic<bool> cancel{true};
@@ -123,12 +152,12 @@ TEST(Renderer, CancelStopsAPassOfManySamplesPerPixelPromptly) {
   const Scene scene = test::boxRoom();
   const RayTracer tracer(scene);
   const Camera camera(scene, 64, 64);
-  const auto integrator = findIntegrator(test::stage("stage1")).create(ParamValues{}, scene);
+  const auto integrator = makeIntegrator(1, scene);
   RenderSettings settings;
   settings.width = settings.height = 64;
-  settings.samplesPerPixel = settings.samplesPerPass = 1u << 20;  // hours of work in one pass
-  Renderer renderer(tracer, camera, *integrator, filterFunctions(test::variantUnderTest()),
-                    settings);
+  // Hours of work in one pass.
+  settings.samplesPerPixel = settings.samplesPerPass = setting::kSamplesPerPixel.maxValue;
+  Renderer renderer(tracer, camera, *integrator, test::stage1UnderTest(), settings);
   std::atomic<bool> cancel{false};
   auto pass = std::async(std::launch::async, [&] { return renderer.renderPass(&cancel); });
   std::this_thread::sleep_for(std::chrono::milliseconds(100));
@@ -146,15 +175,12 @@ TEST(Renderer, CountsTheRaysOfEveryPixel) {
   const Scene scene = loadScene(std::string(PATHWAY_SCENES_DIR) + "/furnace_closed.gltf");
   const RayTracer tracer(scene);
   const Camera camera(scene, 40, 30);
-  const IntegratorInfo& info = findIntegrator(test::stage("stage4"));
-  const auto integrator = info.create(
-      resolveParams(info.name, info.params, {{"branching", "2"}, {"depth", "2"}}), scene);
+  const auto integrator = makeIntegrator(4, scene, {{"branching", "2"}, {"depth", "2"}});
   RenderSettings settings;
   settings.width = 40;
   settings.height = 30;
   settings.samplesPerPixel = 3;
-  Renderer renderer(tracer, camera, *integrator, filterFunctions(test::variantUnderTest()),
-                    settings);
+  Renderer renderer(tracer, camera, *integrator, test::stage1UnderTest(), settings);
   renderer.renderAll();
   const std::vector<uint64_t>& rays = renderer.raysPerPixel();
   ASSERT_EQ(rays.size(), 40u * 30);

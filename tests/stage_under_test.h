@@ -13,6 +13,7 @@
 
 #include "core/variant.h"
 #include "render/integrator_registry.h"
+#include "render/stage_kit.h"
 
 namespace pathway::test {
 
@@ -25,9 +26,14 @@ inline Variant variantUnderTest() {
   return checkingStudentCode() ? Variant::Student : Variant::Reference;
 }
 
-// "stage2" -> "stage2@ref" (default) or "stage2" (PATHWAY_TEST_STUDENT=1).
-inline std::string stage(const std::string& base) {
-  return variantIntegratorName(base, variantUnderTest());
+// "stage2@ref" (default) or "stage2" (PATHWAY_TEST_STUDENT=1).
+inline std::string stage(int number) {
+  return stageIntegratorName(number, variantUnderTest());
+}
+
+// The stage 1 functions (filters, splat) under test.
+inline const Stage1Functions& stage1UnderTest() {
+  return StageKit(1, variantUnderTest(), EarlierStages::Own).stage1();
 }
 
 #ifdef PATHWAY_HAS_SOLUTIONS

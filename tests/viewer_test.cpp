@@ -21,6 +21,7 @@
 #include "viewer/loaded_scene.h"
 #include "viewer/panel.h"
 #include "viewer/render_worker.h"
+#include "viewer/viewer_state.h"
 
 namespace pathway {
 namespace {
@@ -188,6 +189,40 @@ TEST_F(ViewerWorker, ReportsALaneThatCannotStart) {
   EXPECT_TRUE(waitFor(worker, id, 1, 10.0, [](const LaneFrame& f) { return f.error.empty(); }));
 }
 
+TEST_F(ViewerWorker, RefusesParameterValuesOutsideTheirDeclarationInsteadOfClamping) {
+  RenderWorker worker;
+  WorkerJob bad = job("stage2", 32, 18, 4);
+  bad.lanes[0].params["ao-rays"] = 5000;  // declared range [1, 1024]
+  const uint64_t id = worker.submit(bad);
+  const auto frame = waitForFirst(worker, id);
+  ASSERT_TRUE(frame);
+  EXPECT_NE(frame->error.find("ao-rays"), std::string::npos) << frame->error;
+  EXPECT_NE(frame->error.find("[1, 1024]"), std::string::npos) << frame->error;
+  EXPECT_TRUE(frame->images.color.pixels.empty());
+}
+
+TEST(ViewerState, PanelValuesAreCheckedAndShareOneDeclaration) {
+  ViewerState state;
+  EXPECT_EQ(state.settings.samplesPerPixel, setting::kViewerSamplesPerPixel.defaultValue);
+  const IntegratorInfo& info = findIntegrator("stage5");
+  const ParamSpec* lightPick = nullptr;
+  for (const ParamSpec& spec : info.params)
+    if (spec.name == "light-pick") lightPick = &spec;
+  ASSERT_NE(lightPick, nullptr);
+  EXPECT_EQ(lightPick->kind, ParamKind::Choice);  // the panel draws a combo box, not a checkbox
+  setParamValue(state, 0, info, *lightPick, 0.0);
+  EXPECT_EQ(paramValue(state, 0, info, *lightPick), 0.0);
+  EXPECT_THROW(setParamValue(state, 0, info, *lightPick, 2.0), PathwayError);
+  EXPECT_EQ(paramValue(state, 0, info, *lightPick), 0.0);
+  // The job carries every declared parameter and where the earlier stages come from.
+  state.integrator[0] = "stage5";
+  state.earlierStages[0] = EarlierStages::Reference;
+  const WorkerJob job = makeJob(state, nullptr, CameraPose{}, 8, 8);
+  ASSERT_EQ(job.lanes.size(), 1u);
+  EXPECT_EQ(job.lanes[0].params.size(), info.params.size());
+  EXPECT_EQ(job.lanes[0].earlierStages, EarlierStages::Reference);
+}
+
 TEST(ViewerScene, MissingFileIsAnError) {
   EXPECT_THROW(LoadedScene::load("/nowhere/scene.gltf"), PathwayError);
 }
@@ -282,6 +317,15 @@ TEST_F(ViewerCli, WithoutADisplaySaysToUseHeadless) {
   EXPECT_NE(outcome.exitCode, 0);
   EXPECT_NE(outcome.output.find("--headless"), std::string::npos) << outcome.output;
   EXPECT_EQ(outcome.output.find("internal error"), std::string::npos) << outcome.output;
+}
+
+TEST_F(ViewerCli, OutOfRangeParameterIsRefusedBeforeAnyWindowAsRenderDoes) {
+  const Outcome outcome =
+      run(kViewCommand + " --headless -i stage2 -p ao-rays=5000 --screenshot " + path("x.png"));
+  EXPECT_EQ(outcome.exitCode, 1);
+  EXPECT_NE(outcome.output.find("ao-rays"), std::string::npos) << outcome.output;
+  EXPECT_NE(outcome.output.find("[1, 1024]"), std::string::npos) << outcome.output;
+  EXPECT_FALSE(fs::exists(path("x.png")));
 }
 
 TEST_F(ViewerCli, UnknownIntegratorIsRefusedBeforeAnyWindow) {

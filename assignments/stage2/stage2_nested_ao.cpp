@@ -7,8 +7,8 @@
 // The pixel value is the filtered screen integral of AO (your stage 1 does the filtering), so
 // there are two nested 2D integrals: for every eye sample, M AO rays.
 //
-// Your part: the three TODOs below (README.md beside this file walks through them).
-// Stages 3-5 reuse these functions, so get them right here first.
+// Your part: the four TODOs below (README.md beside this file walks through them).
+// Stages 3-5 reuse the first three functions, so get them right here first.
 #include <cmath>
 
 #include "render/stage_api.h"
@@ -31,9 +31,9 @@ float cosineHemispherePdf(float cosTheta) {
 
 // One AO direction's estimate V(P, ω)·cos θ / (π·p(ω)).
 // Useful: Frame(hit.normal).toWorld(local) turns a local direction into a world one;
-// RayTracer::spawnRay(hit, direction, tMax) makes a ray that cannot hit its own surface;
-// context.tracer.occluded(ray, RayKind::Secondary, context.counters) says whether it is blocked.
-float ambientOcclusionSample(RenderContext& context, const SurfaceHit& hit, Vec2 u,
+// hit.spawnRay(direction, tMax) makes a ray that cannot hit its own surface;
+// context.occluded(ray, RayKind::Secondary) says whether anything blocks it.
+float ambientOcclusionSample(const RenderContext& context, const SurfaceHit& hit, Vec2 u,
                              float distance) {
   PATHWAY_TODO("trace one AO ray of length `distance` and return V cos(theta) / (pi p)");
   (void)context, (void)hit, (void)u, (void)distance;
@@ -42,39 +42,27 @@ float ambientOcclusionSample(RenderContext& context, const SurfaceHit& hit, Vec2
 
 class NestedAmbientOcclusion : public Integrator {
  public:
-  NestedAmbientOcclusion(int aoRays, float aoDistance) : aoRays_(aoRays), aoDistance_(aoDistance) {}
+  explicit NestedAmbientOcclusion(const IntegratorSetup& setup)
+      : aoRays_(setup.params.integer("ao-rays")), aoDistance_(setup.params.real("ao-distance")) {}
 
-  Color Li(const Ray& cameraRay, SampleStream& samples, RenderContext& context) const override {
-    const auto hit = context.tracer.intersect(cameraRay, RayKind::Primary, context.counters);
-    if (!hit) return context.scene.background;
+  Color Li(const Ray& cameraRay, SampleStream& samples,
+           const RenderContext& context) const override {
+    const auto hit = context.intersect(cameraRay, RayKind::Primary);
+    if (!hit) return context.background();
     PATHWAY_TODO("average M = aoRays_ AO samples, each with its own samples.next2D()");
-    (void)samples;
+    (void)samples, (void)aoRays_, (void)aoDistance_;
     // Placeholder: the surface lit from the eye, so you can see where the AO will go.
     return Color(eyeLightCosine(*hit, cameraRay));
   }
 
  private:
-  int aoRays_;
-  float aoDistance_;
+  int aoRays_;        // M
+  float aoDistance_;  // D
 };
 
-const bool registered = [] {
-  StageKit& kit = stageKit(PATHWAY_THIS_VARIANT);
-  kit.sampleCosineHemisphere = sampleCosineHemisphere;
-  kit.cosineHemispherePdf = cosineHemispherePdf;
-  kit.ambientOcclusionSample = ambientOcclusionSample;
-  return registerIntegrator(
-      {variantIntegratorName("stage2", PATHWAY_THIS_VARIANT),
-       2,
-       PATHWAY_THIS_VARIANT,
-       "nested AO: per eye sample, M cosine-weighted AO rays of length D",
-       {{"ao-rays", 4, 1, 1024, true, "M: AO rays per eye sample"},
-        {"ao-distance", 0.25, 1e-6, 1e6, false, "D: how far an AO ray looks for blockers"}},
-       [](const ParamValues& p, const Scene&) {
-         return std::make_unique<NestedAmbientOcclusion>(
-             p.integer("ao-rays"), static_cast<float>(p.number("ao-distance")));
-       }});
-}();
+// Stage 2 hands its hemisphere sampling and AO estimate on to stages 3-5.
+const bool registered = registerStage<NestedAmbientOcclusion>(
+    2, Stage2Functions{sampleCosineHemisphere, cosineHemispherePdf, ambientOcclusionSample});
 
 }  // namespace
 }  // namespace pathway

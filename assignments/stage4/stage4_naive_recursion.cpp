@@ -10,7 +10,6 @@
 // Your part: the TODO in trace() below (README.md beside this file explains it).
 #include <cmath>
 
-#include "render/ray_budget.h"
 #include "render/stage_api.h"
 
 namespace pathway {
@@ -18,48 +17,39 @@ namespace {
 
 class NaiveRecursion : public Integrator {
  public:
-  NaiveRecursion(int branching, int depth, const StageKit& kit)
-      : branching_(branching), depth_(depth), kit_(kit) {}
+  explicit NaiveRecursion(const IntegratorSetup& setup)
+      : branching_(setup.params.integer("branching")),
+        depth_(setup.params.integer("depth")),
+        stage2_(setup.kit.stage2()) {}
 
-  Color Li(const Ray& cameraRay, SampleStream& samples, RenderContext& context) const override {
+  Color Li(const Ray& cameraRay, SampleStream& samples,
+           const RenderContext& context) const override {
     return trace(cameraRay, RayKind::Primary, 0, samples, context);
   }
 
  private:
   // Radiance along `ray`, where `bounce` bounces have happened before it.
   // Useful: hit->emitted, hit->albedo, hit->normal; Frame(normal).toWorld(local);
-  // kit_.sampleCosineHemisphere(samples.next2D()) and kit_.cosineHemispherePdf(cos θ) (stage 2);
-  // RayTracer::spawnRay(*hit, direction); RayKind::Secondary for every ray after the first.
+  // your stage 2's stage2_.sampleCosineHemisphere(samples.next2D()) and its density
+  // stage2_.cosineHemispherePdf(cos θ); hit->spawnRay(direction); context.intersect(ray, kind)
+  // with RayKind::Secondary for every ray after the first.
   Color trace(const Ray& ray, RayKind kind, int bounce, SampleStream& samples,
-              RenderContext& context) const {
-    const auto hit = context.tracer.intersect(ray, kind, context.counters);
-    if (!hit) return context.scene.background;
+              const RenderContext& context) const {
+    const auto hit = context.intersect(ray, kind);
+    if (!hit) return context.background();
     PATHWAY_TODO("emission + the average of N recursive estimates, down to depth D");
-    (void)bounce, (void)samples, (void)branching_, (void)depth_, (void)kit_;
+    (void)bounce, (void)samples, (void)branching_, (void)depth_, (void)stage2_;
     // Placeholder: the surface lit from the eye, plus what it emits.
     return eyeLightShading(*hit, ray);
   }
 
-  int branching_;
-  int depth_;
-  const StageKit& kit_;  // stage 2 of the same variant: cosine-weighted directions
+  int branching_;                  // N
+  int depth_;                      // D
+  const Stage2Functions& stage2_;  // stage 2: cosine-weighted directions
 };
 
-const bool registered = registerIntegrator(
-    {variantIntegratorName("stage4", PATHWAY_THIS_VARIANT),
-     4,
-     PATHWAY_THIS_VARIANT,
-     "naive recursive tracing: N random rays at every hit, down to depth D",
-     {{"branching", 3, 1, 1024, true, "N: rays cast at every hit"},
-      {"depth", 2, 0, 64, true, "D: bounces; 0 shows emitters only, 1 adds direct light"},
-      {"max-rays", 1e6, 1, 1e12, true, "refuse settings that cast more rays per camera sample"}},
-     [](const ParamValues& p, const Scene&) {
-       const std::string name = variantIntegratorName("stage4", PATHWAY_THIS_VARIANT);
-       checkRayBudget(name, p.integer("branching"), p.integer("depth"),
-                      static_cast<uint64_t>(p.number("max-rays")));
-       return std::make_unique<NaiveRecursion>(p.integer("branching"), p.integer("depth"),
-                                               stageKit(PATHWAY_THIS_VARIANT));
-     }});
+// The framework refuses settings over the ray budget (parameter max-rays) before this is built.
+const bool registered = registerStage<NaiveRecursion>(4);
 
 }  // namespace
 }  // namespace pathway

@@ -17,114 +17,84 @@
 #include <cmath>
 
 #include "render/stage_api.h"
-#include "sampling/discrete_distribution.h"
-#include "scene/emitters.h"
 
 namespace pathway {
 namespace {
 
-struct LightSample {
-  Vec3 position;
-  Vec3 normal;  // the emitter's front-face normal
-  const EmissiveTriangle* emitter = nullptr;
-  float pdfArea = 0.0f;  // density of this point per unit area over all emitters
-};
-
-// Picks an emitting triangle (by area or by power) and a uniform point on it.
-class LightSampler {
- public:
-  LightSampler(const Scene& scene, bool powerWeighted)
-      : emitters_(collectEmissiveTriangles(scene)) {
-    std::vector<double> weights;
-    for (const EmissiveTriangle& e : emitters_) {
-      const Color power = e.power();
-      weights.push_back(powerWeighted ? (power.x + power.y + power.z) / 3.0 : e.area);
-    }
-    pick_ = DiscreteDistribution(weights);
-  }
-
-  bool empty() const { return pick_.empty(); }
-
-  LightSample sample(float uPick, Vec2 uPoint) const {
-    const size_t index = pick_.sample(uPick);
-    const EmissiveTriangle& e = emitters_[index];
-    PATHWAY_TODO("a uniformly distributed point on triangle e and its density per unit area");
-    (void)uPoint;
-    LightSample light;  // placeholder: the triangle's first corner, with a made-up density
-    light.position = e.p0;
-    light.normal = e.normal;
-    light.emitter = &e;
-    light.pdfArea = 1.0f;
-    return light;
-  }
-
- private:
-  std::vector<EmissiveTriangle> emitters_;
-  DiscreteDistribution pick_;
-};
-
-struct PathSettings {
-  int maxDepth;  // most bounces; -1: no limit (Russian roulette alone ends paths)
-  int rouletteDepth;
-  bool nextEventEstimation;
-  bool powerWeightedLights;
-};
+// A point on the emitters for NEE. `lights.pick(uPick)` chooses a triangle (by area or by power)
+// and tells its probability; the point on that triangle is yours to choose, from uPoint.
+LightSample sampleLight(const EmitterPicker& lights, float uPick, Vec2 uPoint) {
+  const EmitterPicker::Pick pick = lights.pick(uPick);
+  const EmissiveTriangle& e = *pick.emitter;  // corners e.p0, e.p1, e.p2; e.normal, e.area
+  PATHWAY_TODO("a uniformly distributed point on triangle e and its density per unit area");
+  (void)uPoint;
+  LightSample light;  // placeholder: the triangle's first corner, with a made-up density
+  light.position = e.p0;
+  light.normal = e.normal;
+  light.emitter = &e;
+  light.pdfArea = 1.0f;
+  return light;
+}
 
 class PathTracer : public Integrator {
  public:
-  PathTracer(const Scene& scene, const PathSettings& settings, const StageKit& kit)
-      : settings_(settings), lights_(scene, settings.powerWeightedLights), kit_(kit) {}
+  explicit PathTracer(const IntegratorSetup& setup)
+      : maxDepth_(setup.params.integer("max-depth")),
+        rouletteDepth_(setup.params.integer("rr-depth")),
+        nextEventEstimation_(setup.params.flag("nee")),
+        lights_(setup.scene, setup.params.choice("light-pick")),
+        stage2_(setup.kit.stage2()) {}
 
   // Useful: hit->emitted, hit->albedo, hit->normal; directLight() below (NEE);
-  // kit_.sampleCosineHemisphere(samples.next2D()), kit_.cosineHemispherePdf(cos θ) (stage 2);
-  // RayTracer::spawnRay(*hit, direction); samples.next1D() for Russian roulette;
-  // settings_.maxDepth, settings_.rouletteDepth, settings_.nextEventEstimation.
-  Color Li(const Ray& cameraRay, SampleStream& samples, RenderContext& context) const override {
-    const auto hit = context.tracer.intersect(cameraRay, RayKind::Primary, context.counters);
-    if (!hit) return context.scene.background;
-    PATHWAY_TODO(
-        "the path loop: emission (counted once), NEE, one continuation ray per bounce, "
-        "Russian roulette with the 1/q weight");
-    (void)samples;
-    // Placeholder: the surface lit from the eye, plus what it emits.
-    return eyeLightShading(*hit, cameraRay);
+  // stage2_.sampleCosineHemisphere(samples.next2D()), stage2_.cosineHemispherePdf(cos θ);
+  // Frame(hit->normal).toWorld(local); hit->spawnRay(direction); samples.next1D() for Russian
+  // roulette; maxDepth_, rouletteDepth_, nextEventEstimation_.
+  Color Li(const Ray& cameraRay, SampleStream& samples,
+           const RenderContext& context) const override {
+    Color radiance(0.0f);
+    Color throughput(1.0f);  // product of BRDF · cos / pdf (and 1/q) along the path so far
+    Ray ray = cameraRay;
+    RayKind kind = RayKind::Primary;
+    for (int bounce = 0;; ++bounce) {
+      const auto hit = context.intersect(ray, kind);
+      if (!hit) {
+        radiance += throughput * context.background();  // NEE never samples the background
+        break;
+      }
+      PATHWAY_TODO(
+          "the path loop: emission (counted once), the depth limit, NEE, one continuation ray "
+          "per bounce, Russian roulette with the 1/q weight");
+      (void)bounce, (void)samples;
+      // Placeholder: the first surface lit from the eye, plus what it emits; the path ends.
+      radiance += throughput * eyeLightShading(*hit, ray);
+      break;
+    }
+    return radiance;
   }
 
  private:
   // Light arriving at `hit` straight from a point picked on the emitters, times the BRDF.
   Color directLight(const SurfaceHit& hit, const Color& brdf, SampleStream& samples,
-                    RenderContext& context) const {
+                    const RenderContext& context) const {
     // Draw the numbers even when there is nothing to sample, so dimensions stay aligned.
     const float uPick = samples.next1D();
     const Vec2 uPoint = samples.next2D();
     if (lights_.empty()) return Color(0.0f);
-    const LightSample light = lights_.sample(uPick, uPoint);
+    const LightSample light = sampleLight(lights_, uPick, uPoint);
 
     PATHWAY_TODO("direct light: Le * brdf * cos_x * cos_y / (distance^2 * pdfArea) if visible");
     (void)hit, (void)brdf, (void)light, (void)context;
     return Color(0.0f);  // placeholder: no direct light
   }
 
-  PathSettings settings_;
-  LightSampler lights_;
-  const StageKit& kit_;  // stage 2 of the same variant: cosine-weighted directions
+  int maxDepth_;  // most bounces; -1: no limit (Russian roulette alone ends paths)
+  int rouletteDepth_;
+  bool nextEventEstimation_;
+  EmitterPicker lights_;
+  const Stage2Functions& stage2_;  // stage 2: cosine-weighted directions
 };
 
-const bool registered = registerIntegrator(
-    {variantIntegratorName("stage5", PATHWAY_THIS_VARIANT),
-     5,
-     PATHWAY_THIS_VARIANT,
-     "path tracing: one ray per bounce, next-event estimation, Russian roulette",
-     {{"max-depth", 5, -1, 1000, true,
-       "most bounces a path takes (0: emitters only, 1: direct light; -1: no limit)"},
-      {"rr-depth", 3, 0, 1000, true, "bounces before Russian roulette starts"},
-      {"nee", 1, 0, 1, true, "1: shadow rays to the emitters; 0: only bounces find light"},
-      {"light-pick", 1, 0, 1, true, "how NEE picks an emitter: 0 by area, 1 by power"}},
-     [](const ParamValues& p, const Scene& scene) {
-       const PathSettings settings{p.integer("max-depth"), p.integer("rr-depth"), p.flag("nee"),
-                                   p.flag("light-pick")};
-       return std::make_unique<PathTracer>(scene, settings, stageKit(PATHWAY_THIS_VARIANT));
-     }});
+const bool registered = registerStage<PathTracer>(5);
 
 }  // namespace
 }  // namespace pathway

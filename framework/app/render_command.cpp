@@ -1,6 +1,4 @@
 // `pathway render [scene] [options]`: render a scene with one integrator and write EXR and/or PNG.
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -10,26 +8,20 @@
 #include "app/progress_bar.h"
 #include "app/shared_options.h"
 #include "core/error.h"
-#include "render/render_job.h"
+#include "render/render_session.h"
 #include "scene/gltf_loader.h"
 
 namespace pathway {
 namespace {
 
 struct RenderOptions {
-  std::string scene = PATHWAY_DEFAULT_SCENE;
-  std::string integrator = "stage1";
-  std::vector<std::string> params;
+  RenderChoices choices;
   std::vector<std::string> outputs = {"render.png"};
-  int width = 512;
-  int height = 0;  // 0: from the scene camera's aspect ratio, else square
-  uint32_t spp = 16;
-  std::string sampler;  // empty: the integrator's own default
-  uint64_t seed = 0;
-  int threads = 0;
-  std::string filter = "box";
-  float filterRadius = 0.0f;
-  float exposure = 0.0f;
+  int width = setting::kWidth.defaultValue;
+  int height = 0;  // not given: from the scene camera's aspect ratio, else square
+  uint32_t spp = setting::kSamplesPerPixel.defaultValue;
+  int threads = setting::kThreads.defaultValue;
+  float exposure = setting::kExposure.defaultValue;
   bool list = false;
   bool quiet = false;
 };
@@ -41,10 +33,11 @@ void listIntegrators() {
                 variantName(info->variant), samplerTypeName(info->defaultSampler).c_str(),
                 info->summary.c_str());
     for (const ParamSpec& spec : info->params)
-      std::printf("      %-16s %s (default %s, range [%s, %s])\n", spec.name.c_str(),
-                  spec.help.c_str(), formatParamValue(spec, spec.defaultValue).c_str(),
-                  formatParamValue(spec, spec.minValue).c_str(),
-                  formatParamValue(spec, spec.maxValue).c_str());
+      std::printf(
+          "      %-16s %s (default %s, %s %s)\n", spec.name.c_str(), spec.help.c_str(),
+          spec.format(spec.defaultValue).c_str(),
+          spec.kind == ParamKind::Integer || spec.kind == ParamKind::Real ? "range" : "choose",
+          spec.describeRange().c_str());
   }
 }
 
@@ -54,26 +47,15 @@ int run(const RenderOptions& options) {
     return 0;
   }
   // Check everything that can be checked before the scene is loaded and rendering starts.
-  RenderRequest request;
-  request.integrator = options.integrator;
-  const IntegratorInfo& info = findIntegrator(options.integrator);
-  for (const std::string& assignment : options.params) {
-    const auto [name, value] = splitParamAssignment(assignment);
-    request.params[name] = value;
-  }
-  resolveParams(info.name, info.params, request.params);
-  RenderSettings& s = request.settings;
-  s.sampler = options.sampler.empty() ? info.defaultSampler : parseSamplerType(options.sampler);
-  s.filter = parseFilterType(options.filter);
-  s.filterRadius = options.filterRadius;
+  RenderRecipe recipe = options.choices.recipe();
+  RenderSettings& s = recipe.settings;
   s.samplesPerPixel = options.spp;
-  s.seed = options.seed;
   s.threads = options.threads;
   // Sixteen passes keep the progress bar moving; more would only add merge work.
   s.samplesPerPass = std::max(1u, options.spp / 16);
   for (const std::string& output : options.outputs) checkImagePath(output);
 
-  const Scene scene = loadScene(options.scene);
+  const Scene scene = loadScene(options.choices.scene, {options.choices.strictScene});
   s.width = options.width;
   s.height = options.height;
   if (s.height == 0) {
@@ -84,7 +66,7 @@ int run(const RenderOptions& options) {
   const RayTracer tracer(scene);
 
   ProgressBar progress(!options.quiet);
-  const RenderResult result = runRender(scene, tracer, request, [&](const RenderStats& stats) {
+  const RenderResult result = runRender(tracer, recipe, [&](const RenderStats& stats) {
     const std::string label =
         std::to_string(stats.samplesPerPixel) + "/" + std::to_string(s.samplesPerPixel) + " spp";
     progress.update(static_cast<double>(stats.samplesPerPixel) / s.samplesPerPixel, label.c_str());
@@ -97,8 +79,9 @@ int run(const RenderOptions& options) {
   const RayCounters& c = result.stats.counters;
   const double seconds = result.stats.seconds;
   if (!options.quiet) {
-    std::printf("%s: %s, %dx%d, %u spp, %.3f s\n", options.scene.c_str(), info.name.c_str(),
-                s.width, s.height, result.stats.samplesPerPixel, seconds);
+    std::printf("%s: %s, %dx%d, %u spp, %.3f s\n", options.choices.scene.c_str(),
+                recipe.integrator.c_str(), s.width, s.height, result.stats.samplesPerPixel,
+                seconds);
     std::printf("rays: %llu primary, %llu secondary, %llu shadow; %.2f M rays/s\n",
                 static_cast<unsigned long long>(c.primary),
                 static_cast<unsigned long long>(c.secondary),
@@ -125,35 +108,26 @@ int run(const RenderOptions& options) {
 
 Command addRenderCommand(CLI::App& app) {
   auto options = std::make_shared<RenderOptions>();
+  options->choices.scene = PATHWAY_DEFAULT_SCENE;
   CLI::App* render = app.add_subcommand("render", "Render a scene to an image file");
   render->footer(
       "Examples:\n"
       "  pathway render --list                          integrators and their parameters\n"
       "  pathway render scenes/cornell_box.gltf -o box.png\n"
       "  pathway render scenes/cornell_box.gltf -i stage1@ref --filter mitchell --spp 4 -o a.exr\n"
-      "  pathway render scenes/cornell_box.gltf -i stage2 -p ao-rays=4 -p ao-distance=0.3");
-  addSharedOptions(*render, {options->scene, options->integrator, options->params, options->sampler,
-                             options->seed, options->filter, options->filterRadius});
+      "  pathway render scenes/cornell_box.gltf -i stage2 -p ao-rays=4 -p ao-distance=0.3\n"
+      "  pathway render scenes/cornell_box.gltf -i stage5@ref -p nee=off -p light-pick=area");
+  addSharedOptions(*render, options->choices);
   render
       ->add_option("-o,--output", options->outputs,
                    "Output file(s): .exr (linear, variance, metadata) or .png (sRGB)")
       ->capture_default_str();
-  render->add_option("--spp", options->spp, "Samples per pixel")
-      ->check(CLI::Range(1u, 1u << 20))
-      ->capture_default_str();
-  render->add_option("--width", options->width, "Image width in pixels")
-      ->check(CLI::Range(1, 16384))
-      ->capture_default_str();
-  render
-      ->add_option("--height", options->height,
-                   "Image height in pixels (default: from the camera's aspect ratio)")
-      ->check(CLI::Range(1, 16384));
-  render->add_option("--threads", options->threads, "Worker threads (0: all cores)")
-      ->check(CLI::Range(0, 1024))
-      ->capture_default_str();
-  render->add_option("--exposure", options->exposure, "PNG exposure in stops (EXR is never scaled)")
-      ->check(CLI::Range(-20.0f, 20.0f))
-      ->capture_default_str();
+  addSettingOption(*render, setting::kSamplesPerPixel, options->spp);
+  addSettingOption(*render, setting::kWidth, options->width);
+  render->add_option("--height", options->height, setting::kHeight.help)
+      ->check(CLI::Range(setting::kHeight.minValue, setting::kHeight.maxValue));
+  addSettingOption(*render, setting::kThreads, options->threads);
+  addSettingOption(*render, setting::kExposure, options->exposure);
   render->add_flag("--list", options->list, "List the integrators and their parameters, then exit");
   render->add_flag("-q,--quiet", options->quiet, "No progress bar or summary");
   return {render, [options] { return run(*options); }};

@@ -1,29 +1,31 @@
 #include "app/shared_options.h"
 
-#include "film/pixel_filter.h"
-
 namespace pathway {
 
-void addSharedOptions(CLI::App& command, const SharedOptions& options) {
-  command.add_option("scene", options.scene, "glTF 2.0 scene (.gltf or .glb)")
+void addSharedOptions(CLI::App& command, RenderChoices& choices) {
+  command.add_option("scene", choices.scene, "glTF 2.0 scene (.gltf or .glb)")
       ->capture_default_str();
   command
-      .add_option("-i,--integrator", options.integrator,
+      .add_option("-i,--integrator", choices.integrator,
                   "Integrator by name: stageN is yours, stageN@ref the reference")
       ->capture_default_str();
-  command.add_option("-p,--param", options.params,
+  command.add_option("-p,--param", choices.params,
                      "Integrator parameter name=value (repeatable; see pathway render --list)");
-  command.add_option(
-      "--sampler", options.sampler,
-      "independent, stratified or sobol (default: the integrator's; stage 3 uses sobol)");
-  command.add_option("--seed", options.seed, "Random seed; same seed, same image")
-      ->capture_default_str();
-  command.add_option("--filter", options.filter, "Pixel filter: box, tent, mitchell, gaussian")
-      ->capture_default_str();
   command
-      .add_option("--filter-radius", options.filterRadius,
-                  "Filter support in pixels (default: box 0.5, tent 1, mitchell 2, gaussian 1.5)")
-      ->check(CLI::Range(0.0f, kMaxFilterRadius));
+      .add_option("--earlier-stages", choices.earlierStages,
+                  "Where the integrator's earlier stages come from: 'own' (your stage 3 uses your "
+                  "stages 1-2) or 'reference' (the reference's stages 1-2)")
+      ->capture_default_str();
+  command.add_option(
+      "--sampler", choices.sampler,
+      "independent, stratified or sobol (default: the integrator's; stage 3 uses sobol)");
+  addSettingOption(command, setting::kSeed, choices.seed);
+  command.add_option("--filter", choices.filter, "Pixel filter: box, tent, mitchell, gaussian")
+      ->capture_default_str();
+  addSettingOption(command, setting::kFilterRadius, choices.filterRadius);
+  command.add_flag("--strict", choices.strictScene,
+                   "Refuse a scene that requires KHR_lights_punctual (Blender's lamps) instead of "
+                   "loading it without its lamps and a warning");
 }
 
 }  // namespace pathway

@@ -1,24 +1,29 @@
 // The options `pathway render` and `pathway view` share, declared once so that their names,
-// help texts and ranges cannot drift apart.
+// help texts, defaults and ranges cannot drift apart. Settings come from their declarations in
+// render/render_settings.h and the integrators' parameters from the registry.
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <cstdint>
+#include <limits>
 #include <string>
-#include <vector>
+
+#include "render/render_choices.h"
+#include "render/render_settings.h"
 
 namespace pathway {
 
-struct SharedOptions {  // where the parsed values go
-  std::string& scene;
-  std::string& integrator;
-  std::vector<std::string>& params;  // name=value
-  std::string& sampler;              // empty: the integrator's own default
-  uint64_t& seed;
-  std::string& filter;
-  float& filterRadius;  // 0: the filter's natural radius
-};
+void addSharedOptions(CLI::App& command, RenderChoices& choices);
 
-void addSharedOptions(CLI::App& command, const SharedOptions& options);
+// Adds --<name> for a declared setting: its help, its range and its default.
+template <typename T>
+CLI::Option* addSettingOption(CLI::App& command, const SettingSpec<T>& spec, T& value) {
+  value = spec.defaultValue;
+  CLI::Option* option = command.add_option(std::string("--") + spec.name, value, spec.help);
+  // A range as wide as the type says nothing (the seed): leave it out of --help.
+  if (spec.minValue != std::numeric_limits<T>::lowest() ||
+      spec.maxValue != std::numeric_limits<T>::max())
+    option->check(CLI::Range(spec.minValue, spec.maxValue));
+  return option->capture_default_str();
+}
 
 }  // namespace pathway

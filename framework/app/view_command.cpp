@@ -11,19 +11,18 @@ namespace pathway {
 
 Command addViewCommand(CLI::App& app) {
   auto options = std::make_shared<ViewerOptions>();
-  options->scene = PATHWAY_DEFAULT_SCENE;
+  options->choices.scene = PATHWAY_DEFAULT_SCENE;
   CLI::App* view = app.add_subcommand("view", "Open the interactive viewer");
   view->footer(
       "Examples:\n"
       "  pathway view                                    Cornell box, stage 1 (yours)\n"
       "  pathway view scenes/cornell_box.gltf -i stage2 -p ao-rays=4\n"
-      "  pathway view -i stage5@ref -p nee=1 --split stage5@ref --split-param nee=0 --balance "
+      "  pathway view -i stage5@ref -p nee=on --split stage5@ref --split-param nee=off --balance "
       "rays\n"
       "  pathway view --headless --frames 60 --screenshot ui.png   (no display needed)\n"
       "  pathway view --benchmark                        progressive fps, time to first image\n"
       "Press H in the viewer for the keys and mouse.");
-  addSharedOptions(*view, {options->scene, options->integrator, options->params, options->sampler,
-                           options->seed, options->filter, options->filterRadius});
+  addSharedOptions(*view, options->choices);
   view->add_option("--split", options->splitIntegrator,
                    "Split view: this integrator in the right pane");
   view->add_option("--split-param", options->splitParams,
@@ -32,26 +31,19 @@ Command addViewCommand(CLI::App& app) {
                    "Split view: 'time' (equal render time) or 'rays' (equal ray count)")
       ->capture_default_str();
   view->add_option("--width", options->width, "Render width in pixels (default: follow the window)")
-      ->check(CLI::Range(1, 16384));
+      ->check(CLI::Range(setting::kWidth.minValue, setting::kWidth.maxValue));
   view->add_option("--height", options->height,
                    "Render height in pixels (default: follow the window)")
-      ->check(CLI::Range(1, 16384));
+      ->check(CLI::Range(setting::kHeight.minValue, setting::kHeight.maxValue));
   view->add_option("--window-width", options->windowWidth, "Window width")
       ->check(CLI::Range(400, 16384))
       ->capture_default_str();
   view->add_option("--window-height", options->windowHeight, "Window height")
       ->check(CLI::Range(300, 16384))
       ->capture_default_str();
-  view->add_option("--spp", options->spp, "Samples per pixel at which rendering stops")
-      ->check(CLI::Range(1u, 1u << 20))
-      ->capture_default_str();
-  view->add_option("--spp-per-pass", options->samplesPerPass,
-                   "Samples per pixel added between two displayed images")
-      ->check(CLI::Range(1u, 1u << 20))
-      ->capture_default_str();
-  view->add_option("--exposure", options->exposure, "Display exposure in stops")
-      ->check(CLI::Range(-10.0f, 10.0f))
-      ->capture_default_str();
+  addSettingOption(*view, setting::kViewerSamplesPerPixel, options->spp);
+  addSettingOption(*view, setting::kSamplesPerPass, options->samplesPerPass);
+  addSettingOption(*view, setting::kExposure, options->exposure);
   view->add_option("--display", options->display, "color, variance or rays (rays per sample)")
       ->capture_default_str();
   view->add_flag("--show-help", options->showHelp, "Open with the keys-and-mouse help shown");

@@ -10,11 +10,6 @@ namespace {
 const FilterType kFilterTypes[] = {FilterType::Box, FilterType::Tent, FilterType::MitchellNetravali,
                                    FilterType::Gaussian};
 
-FilterFunctions& slot(Variant variant) {
-  static FilterFunctions tables[2];
-  return tables[variant == Variant::Student ? 0 : 1];
-}
-
 }  // namespace
 
 std::string filterTypeName(FilterType type) {
@@ -57,20 +52,8 @@ float naturalFilterRadius(FilterType type) {
   return 1.0f;
 }
 
-void registerFilterFunctions(Variant variant, const FilterFunctions& functions) {
-  slot(variant) = functions;
-}
-
-const FilterFunctions& filterFunctions(Variant variant) {
-  const FilterFunctions& table = slot(variant);
-  if (!table.splat)
-    throw PathwayError(std::string("the ") + variantName(variant) +
-                       " stage 1 (filters and splat) is not built into this program");
-  return table;
-}
-
-PixelFilter::PixelFilter(FilterType type, float radius, const FilterFunctions& functions)
-    : type_(type), radius_(radius), functions_(&functions) {
+PixelFilter::PixelFilter(FilterType type, float radius, const FilterProfiles& profiles)
+    : type_(type), radius_(radius), profiles_(profiles) {
   if (!(radius > 0.0f) || !std::isfinite(radius) || radius > kMaxFilterRadius)
     throw PathwayError("filter radius must be in (0, " + std::to_string(kMaxFilterRadius) +
                        "] pixels, got " + std::to_string(radius));
@@ -82,13 +65,13 @@ float PixelFilter::evaluate1D(float d) const {
   const float x = d * scale_;
   switch (type_) {
     case FilterType::Box:
-      return functions_->box(x);
+      return profiles_.box(x);
     case FilterType::Tent:
-      return functions_->tent(x);
+      return profiles_.tent(x);
     case FilterType::MitchellNetravali:
-      return functions_->mitchellNetravali(x);
+      return profiles_.mitchellNetravali(x);
     case FilterType::Gaussian:
-      return functions_->gaussian(x, naturalFilterRadius(type_) / 3.0f);
+      return profiles_.gaussian(x, naturalFilterRadius(type_) / 3.0f);
   }
   return 0.0f;
 }

@@ -1,15 +1,12 @@
-// Pixel filters and the splat: the contract between the framework and stage 1.
-//
-// Stage 1 (assignments/stage1) writes the four 1D filter profiles and the splat; it hands them to
-// the framework as a FilterFunctions table, one table per variant (the student's and, when
-// solutions/ is present, the reference). The renderer calls them through PixelFilter.
+// Pixel filters: the four 1D profiles stage 1 writes (assignments/stage1), scaled to a chosen
+// support and combined into a separable 2D filter. Stage 1 hands its profiles (and its splat) on
+// through the stage kit (render/stage_kit.h); the film only sees them through PixelFilter.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "core/math.h"
-#include "core/variant.h"
 #include "film/film.h"
 
 namespace pathway {
@@ -27,27 +24,18 @@ std::vector<std::string> filterTypeNames();
 // Gaussian 1.5 (σ = 0.5, cut at 3σ).
 float naturalFilterRadius(FilterType type);
 
-class PixelFilter;
-
-// What stage 1 provides. Profiles are 1D, centred on 0, on their natural support.
-struct FilterFunctions {
+// The 1D profiles, centred on 0, on their natural support (stage 1 writes them).
+struct FilterProfiles {
   float (*box)(float x) = nullptr;
   float (*tent)(float x) = nullptr;
   float (*mitchellNetravali)(float x) = nullptr;
   float (*gaussian)(float x, float sigma) = nullptr;  // cut to 0 beyond 3σ
-  // Adds f_j·L and f_j to every pixel j whose filter support holds the sample at `position`.
-  void (*splat)(FilmBlock& film, Vec2 position, const Color& radiance,
-                const PixelFilter& filter) = nullptr;
 };
-
-void registerFilterFunctions(Variant variant, const FilterFunctions& functions);
-// The table of `variant`; throws PathwayError when that variant is not built in.
-const FilterFunctions& filterFunctions(Variant variant);
 
 // A 2D separable filter f(dx, dy) = f(dx)·f(dy), scaled to a chosen support radius.
 class PixelFilter {
  public:
-  PixelFilter(FilterType type, float radius, const FilterFunctions& functions);
+  PixelFilter(FilterType type, float radius, const FilterProfiles& profiles);
 
   float radius() const { return radius_; }  // f is 0 when |dx| or |dy| exceeds it
   float evaluate1D(float d) const;
@@ -57,7 +45,7 @@ class PixelFilter {
   FilterType type_;
   float radius_;
   float scale_;  // natural radius / chosen radius: stretches the profile to the chosen support
-  const FilterFunctions* functions_;
+  FilterProfiles profiles_;
 };
 
 }  // namespace pathway

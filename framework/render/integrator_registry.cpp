@@ -4,6 +4,7 @@
 #include <map>
 
 #include "core/error.h"
+#include "render/stage_catalog.h"
 
 namespace pathway {
 namespace {
@@ -15,14 +16,32 @@ std::map<std::string, IntegratorInfo>& registry() {
 
 }  // namespace
 
-std::string variantIntegratorName(const std::string& baseName, Variant variant) {
-  return variant == Variant::Reference ? baseName + "@ref" : baseName;
+std::string stageIntegratorName(int stage, Variant variant) {
+  const std::string name = "stage" + std::to_string(stage);
+  return variant == Variant::Reference ? name + "@ref" : name;
 }
 
 bool registerIntegrator(IntegratorInfo info) {
   const std::string name = info.name;
   registry()[name] = std::move(info);
   return true;
+}
+
+bool registerStageIntegrator(int stage, Variant variant, IntegratorFactory factory) {
+  const StageDeclaration& declaration = stageDeclaration(stage);
+  IntegratorInfo info;
+  info.name = stageIntegratorName(stage, variant);
+  info.stage = stage;
+  info.variant = variant;
+  info.summary = declaration.summary;
+  info.params = declaration.params;
+  info.defaultSampler = declaration.defaultSampler;
+  info.create = [name = info.name, check = declaration.check,
+                 factory = std::move(factory)](const IntegratorSetup& setup) {
+    if (check) check(name, setup.params);
+    return factory(setup);
+  };
+  return registerIntegrator(std::move(info));
 }
 
 const IntegratorInfo& findIntegrator(const std::string& name) {
@@ -33,6 +52,11 @@ const IntegratorInfo& findIntegrator(const std::string& name) {
     known += (known.empty() ? "" : ", ") + info->name;
   throw PathwayError("unknown integrator '" + name + "' (known: " + known +
                      "; 'pathway render --list' describes them)");
+}
+
+const IntegratorInfo* findStageIntegrator(int stage, Variant variant) {
+  auto it = registry().find(stageIntegratorName(stage, variant));
+  return it != registry().end() ? &it->second : nullptr;
 }
 
 std::vector<const IntegratorInfo*> allIntegrators() {

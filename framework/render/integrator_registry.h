@@ -1,5 +1,6 @@
-// Integrators are found by name. Each stage file registers its integrator once, with its
-// parameters; the student's version is "stageN", the reference (from solutions/) "stageN@ref".
+// Integrators are found by name. Each stage file registers its integrator once (through
+// registerStage in render/stage_api.h); the student's version is "stageN", the reference (from
+// solutions/) "stageN@ref". Benchmarks may register integrators of their own.
 #pragma once
 
 #include <functional>
@@ -10,31 +11,51 @@
 #include "core/variant.h"
 #include "render/integrator.h"
 #include "render/parameters.h"
+#include "render/stage_kit.h"
 
 namespace pathway {
 
+// What an integrator is built from.
+struct IntegratorSetup {
+  const ParamValues& params;  // every declared parameter, checked against its declaration
+  const StageKit& kit;        // the earlier stages' functions
+  const Scene& scene;
+};
+
+using IntegratorFactory = std::function<std::unique_ptr<Integrator>(const IntegratorSetup&)>;
+
 struct IntegratorInfo {
   std::string name;  // "stage2" or "stage2@ref"
-  int stage = 0;     // 1..5, the course stage it belongs to
+  int stage = 0;     // 1..5, the course stage it belongs to; 0 for others
   Variant variant = Variant::Student;
   std::string summary;  // one line for --list
   std::vector<ParamSpec> params;
-  // Builds the integrator for a scene; may throw PathwayError for parameter combinations it
-  // refuses (before any rendering starts).
-  std::function<std::unique_ptr<Integrator>(const ParamValues&, const Scene&)> create;
-  // The sampler this stage is meant to be seen with, when the user does not choose one.
+  // The sampler this integrator is meant to be seen with, when the user does not choose one.
   SamplerType defaultSampler = SamplerType::Independent;
+  // Builds the integrator; may throw PathwayError for parameter combinations it refuses (before
+  // any rendering starts).
+  IntegratorFactory create;
+
+  // The kit this integrator renders with when its earlier stages come from `earlier`.
+  StageKit kit(EarlierStages earlier = EarlierStages::Own) const {
+    return StageKit(stage, variant, earlier);
+  }
 };
 
 // Registers at static-initialisation time; returns true so it can initialise a static bool.
 bool registerIntegrator(IntegratorInfo info);
+// Registers stage `stage` of `variant` under the stage's declared name, summary and parameters
+// (render/stage_catalog.h), running the stage's own checks before `factory`.
+bool registerStageIntegrator(int stage, Variant variant, IntegratorFactory factory);
 
 // Throws PathwayError listing the known names when `name` is unknown.
 const IntegratorInfo& findIntegrator(const std::string& name);
+// Stage `stage` of `variant`, or nullptr when it is not built in.
+const IntegratorInfo* findStageIntegrator(int stage, Variant variant);
 // All integrators, sorted by stage, student before reference.
 std::vector<const IntegratorInfo*> allIntegrators();
 
-// The name a stage registers under in the variant being compiled.
-std::string variantIntegratorName(const std::string& baseName, Variant variant);
+// The name stage `stage` registers under in `variant`: "stage2" or "stage2@ref".
+std::string stageIntegratorName(int stage, Variant variant);
 
 }  // namespace pathway

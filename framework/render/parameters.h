@@ -1,42 +1,84 @@
-// Integrator parameters, declared once (name, default, range, help) by the stage that owns them.
-// The CLI, the viewer panel and the docs all read the same declarations.
+// Integrator parameters, declared once by kind (integer, real, switch, choice) with their default,
+// range and help. The CLI, the viewer panel, the metadata and the docs all read the same
+// declarations; values outside them are refused, never clamped.
 #pragma once
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pathway {
 
+enum class ParamKind {
+  Integer,  // a whole number in [minValue, maxValue]
+  Real,     // a real number in [minValue, maxValue]
+  Switch,   // on or off (written on/off, also accepted as 1/0, true/false)
+  Choice,   // one of `options`, by name; stored as the option's index
+};
+
 struct ParamSpec {
   std::string name;  // lower-case, dash-separated: "ao-distance"
+  ParamKind kind = ParamKind::Real;
   double defaultValue = 0.0;
   double minValue = 0.0;
   double maxValue = 0.0;
-  bool isInteger = false;  // integers and on/off switches (0 or 1)
+  std::vector<std::string> options;  // Choice only
   std::string help;
+
+  static ParamSpec integer(std::string name, long long defaultValue, long long minValue,
+                           long long maxValue, std::string help);
+  static ParamSpec real(std::string name, double defaultValue, double minValue, double maxValue,
+                        std::string help);
+  static ParamSpec toggle(std::string name, bool defaultValue, std::string help);
+  static ParamSpec choice(std::string name, const std::string& defaultOption,
+                          std::vector<std::string> options, std::string help);
+
+  bool isWholeNumber() const { return kind != ParamKind::Real; }
+  // True when `value` is one this parameter can take (in range; whole where it must be).
+  bool accepts(double value) const;
+  // The value as a user writes it: "4", "0.25", "on", "power".
+  std::string format(double value) const;
+  // "[1, 1024]", "on or off", "area or power".
+  std::string describeRange() const;
 };
 
+// The values of one integrator's parameters, every declared one present.
 class ParamValues {
  public:
+  ParamValues() = default;
+  // Every parameter at its default.
+  explicit ParamValues(std::vector<ParamSpec> specs);
+
+  // Sets a declared parameter; throws PathwayError naming `owner`, the parameter and its range
+  // when the name is unknown or the value is not one it accepts.
+  void set(const std::string& owner, const std::string& name, double value);
+  // The same from text as a user writes it ("4", "on", "power").
+  void setText(const std::string& owner, const std::string& name, const std::string& text);
+
   double number(const std::string& name) const;  // throws if the name was never declared
   int integer(const std::string& name) const { return static_cast<int>(number(name)); }
+  float real(const std::string& name) const { return static_cast<float>(number(name)); }
   bool flag(const std::string& name) const { return number(name) != 0.0; }
-  void set(const std::string& name, double value) { values_[name] = value; }
+  const std::string& choice(const std::string& name) const;  // the chosen option's name
+
+  const std::vector<ParamSpec>& specs() const { return specs_; }
+  // "name=value name=value", in declaration order, each as setText() reads it back.
+  std::string describe() const;
+  bool operator==(const ParamValues& o) const { return values_ == o.values_; }
 
  private:
+  const ParamSpec& spec(const std::string& owner, const std::string& name) const;
+
+  std::vector<ParamSpec> specs_;
   std::map<std::string, double> values_;
 };
 
-// Starts from the defaults and applies `given` (name -> text). Unknown names, text that is not a
-// number, non-integers for integer parameters and values out of range throw PathwayError naming
-// the integrator, the parameter and the allowed range.
-ParamValues resolveParams(const std::string& integratorName, const std::vector<ParamSpec>& specs,
+// The defaults of `specs` with `given` (name -> text) applied; throws PathwayError as set() does.
+ParamValues resolveParams(const std::string& owner, const std::vector<ParamSpec>& specs,
                           const std::map<std::string, std::string>& given);
 
 // "name=value" -> (name, value); throws PathwayError on text without '='.
 std::pair<std::string, std::string> splitParamAssignment(const std::string& text);
-
-std::string formatParamValue(const ParamSpec& spec, double value);
 
 }  // namespace pathway

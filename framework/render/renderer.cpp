@@ -20,33 +20,21 @@ struct Renderer::Tile {
 
 namespace {
 
-const RenderSettings& checked(const RenderSettings& s) {
-  auto require = [](bool ok, const std::string& message) {
-    if (!ok) throw PathwayError(message);
-  };
-  require(s.width >= 1 && s.width <= 16384 && s.height >= 1 && s.height <= 16384,
-          "image size must be between 1x1 and 16384x16384, got " + std::to_string(s.width) + "x" +
-              std::to_string(s.height));
-  require(s.samplesPerPixel >= 1, "samples per pixel must be at least 1");
-  require(s.samplesPerPass >= 1, "samples per pass must be at least 1");
-  require(s.threads >= 0 && s.threads <= 1024, "threads must be 0 (all cores) or 1..1024");
-  require(s.tileSize >= 4 && s.tileSize <= 256, "tile size must be in [4, 256]");
-  return s;
+const RenderSettings& checked(const RenderSettings& settings) {
+  settings.check();
+  return settings;
 }
 
 }  // namespace
 
 Renderer::Renderer(const RayTracer& tracer, const Camera& camera, const Integrator& integrator,
-                   const FilterFunctions& filterFunctions, const RenderSettings& settings)
+                   const Stage1Functions& stage1, const RenderSettings& settings)
     : tracer_(tracer),
       camera_(camera),
       integrator_(integrator),
-      filterFunctions_(filterFunctions),
+      stage1_(stage1),
       settings_(checked(settings)),
-      filter_(settings.filter,
-              settings.filterRadius > 0.0f ? settings.filterRadius
-                                           : naturalFilterRadius(settings.filter),
-              filterFunctions),
+      filter_(settings.filter, settings.filterRadiusPixels(), stage1.profiles),
       sampler_(settings.sampler, settings.samplesPerPixel, settings.seed),
       film_(settings.width, settings.height),
       raysPerPixel_(static_cast<size_t>(settings_.width) * settings_.height, 0) {
@@ -84,7 +72,7 @@ void Renderer::renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount
                           const std::atomic<bool>* cancel) {
   tile.block.clear();
   tile.counters = RayCounters{};
-  RenderContext context{tracer_.scene(), tracer_, tile.counters};
+  const RenderContext context(tracer_, tile.counters);
   uint64_t* pixelRays = tile.rays.data();
   for (int y = tile.y0; y < tile.y1; ++y) {
     for (int x = tile.x0; x < tile.x1; ++x, ++pixelRays) {
@@ -99,7 +87,7 @@ void Renderer::renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount
           ++tile.counters.invalidSamples;
           continue;
         }
-        filterFunctions_.splat(tile.block, filmPosition, radiance, filter_);
+        stage1_.splat(tile.block, filmPosition, radiance, filter_);
         ++tile.counters.samples;
       }
       *pixelRays = tile.counters.totalRays() - raysBefore;

@@ -15,23 +15,12 @@
 #include "film/film.h"
 #include "film/pixel_filter.h"
 #include "render/integrator.h"
+#include "render/render_settings.h"
+#include "render/stage_kit.h"
 #include "sampling/sampler.h"
 #include "scene/camera.h"
 
 namespace pathway {
-
-struct RenderSettings {
-  int width = 512;
-  int height = 512;
-  uint32_t samplesPerPixel = 16;
-  uint32_t samplesPerPass = 1;
-  SamplerType sampler = SamplerType::Independent;
-  uint64_t seed = 0;
-  int threads = 0;  // 0: all cores
-  FilterType filter = FilterType::Box;
-  float filterRadius = 0.0f;  // 0: the filter's natural radius
-  int tileSize = 32;
-};
 
 struct RenderStats {
   RayCounters counters;
@@ -41,8 +30,9 @@ struct RenderStats {
 
 class Renderer {
  public:
+  // Splats with stage 1's functions `stage1`; throws PathwayError for settings out of range.
   Renderer(const RayTracer& tracer, const Camera& camera, const Integrator& integrator,
-           const FilterFunctions& filterFunctions, const RenderSettings& settings);
+           const Stage1Functions& stage1, const RenderSettings& settings);
   ~Renderer();
 
   // Renders the next pass. Returns false (and leaves the film as it was before the pass) when
@@ -69,7 +59,7 @@ class Renderer {
   const RayTracer& tracer_;
   const Camera& camera_;
   const Integrator& integrator_;
-  const FilterFunctions& filterFunctions_;
+  const Stage1Functions& stage1_;
   RenderSettings settings_;
   PixelFilter filter_;
   Sampler sampler_;

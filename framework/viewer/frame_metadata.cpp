@@ -2,8 +2,6 @@
 
 #include <sstream>
 
-#include "render/render_job.h"
-
 namespace pathway {
 namespace {
 
@@ -16,12 +14,7 @@ std::string vec3Text(const Vec3& v) {
 }  // namespace
 
 ImageMetadata frameMetadata(const LaneFrame& frame) {
-  std::ostringstream params;
-  for (const auto& [name, value] : frame.params)
-    params << (params.tellp() > 0 ? " " : "") << name << "=" << value;
-  ImageMetadata metadata =
-      renderMetadata(frame.scenePath, frame.integrator, params.str(), frame.settings, frame.stats,
-                     frame.unresolvedPixels, frame.todos.size());
+  ImageMetadata metadata = frame.metadata;
   metadata.push_back({"pathway:cameraPosition", vec3Text(frame.camera.position)});
   metadata.push_back({"pathway:cameraLookAt", vec3Text(frame.camera.lookAt)});
   metadata.push_back({"pathway:cameraUp", vec3Text(frame.camera.up)});

@@ -47,11 +47,8 @@ std::string describe(const LaneFrame& frame) {
   for (const IntegratorInfo* info : allIntegrators())
     if (info->name == frame.integrator)
       text += info->variant == Variant::Student ? "  (yours)" : "  (reference)";
-  for (const auto& [name, value] : frame.params) {
-    char number[32];
-    std::snprintf(number, sizeof number, "%g", value);
-    text += "  " + name + "=" + number;
-  }
+  if (!frame.params.specs().empty()) text += "  " + frame.params.describe();
+  if (frame.earlierStages == EarlierStages::Reference) text += "  (stages before: reference)";
   return text;
 }
 

@@ -1,12 +1,11 @@
 #include "viewer/loaded_scene.h"
 
-#include "scene/gltf_loader.h"
-
 namespace pathway {
 
-std::shared_ptr<const LoadedScene> LoadedScene::load(const std::string& path) {
+std::shared_ptr<const LoadedScene> LoadedScene::load(const std::string& path,
+                                                     const SceneLoadOptions& options) {
   auto loaded = std::make_shared<LoadedScene>();
-  loaded->scene = loadScene(path);
+  loaded->scene = loadScene(path, options);
   loaded->tracer = std::make_unique<RayTracer>(loaded->scene);
   return loaded;
 }

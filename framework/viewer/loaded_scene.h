@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "scene/gltf_loader.h"
 #include "scene/ray_tracer.h"
 #include "scene/scene.h"
 
@@ -16,7 +17,8 @@ struct LoadedScene {
   std::unique_ptr<RayTracer> tracer;
 
   // Throws PathwayError naming the file and the problem.
-  static std::shared_ptr<const LoadedScene> load(const std::string& path);
+  static std::shared_ptr<const LoadedScene> load(const std::string& path,
+                                                 const SceneLoadOptions& options = {});
 };
 
 }  // namespace pathway

@@ -37,7 +37,9 @@ const IntegratorInfo* findInfo(const std::string& name) {
   return nullptr;
 }
 
-// One slider (or checkbox, for 0/1 switches) per declared parameter, clamped to its range.
+// One widget per declared parameter, by its kind: a checkbox for a switch, a combo for a choice,
+// sliders for numbers. Every widget stays inside the declared range (AlwaysClamp also holds for
+// values typed with Ctrl+click), so the render never sees a value it would refuse.
 void parameterWidgets(ViewerState& state, int lane, const IntegratorInfo& info) {
   if (info.params.empty()) ImGui::TextDisabled("(no parameters)");
   for (const ParamSpec& spec : info.params) {
@@ -46,36 +48,56 @@ void parameterWidgets(ViewerState& state, int lane, const IntegratorInfo& info) 
     const ImGuiSliderFlags clamp = ImGuiSliderFlags_AlwaysClamp;
     bool changed = false;
     double result = value;
-    if (spec.isInteger && spec.minValue == 0.0 && spec.maxValue == 1.0) {
-      bool on = value != 0.0;
-      changed = ImGui::Checkbox(name, &on);
-      result = on ? 1.0 : 0.0;
-    } else if (spec.isInteger) {
-      // 64-bit: some limits (e.g. a ray budget) go far beyond int.
-      long long v = static_cast<long long>(value);
-      const long long lo = static_cast<long long>(spec.minValue);
-      const long long hi = static_cast<long long>(spec.maxValue);
-      if (hi - lo <= 64)
-        changed = ImGui::SliderScalar(name, ImGuiDataType_S64, &v, &lo, &hi, "%lld", clamp);
-      else if (lo > 0)  // counts over decades (rays per hit, budgets): a log scale
-        changed = ImGui::SliderScalar(name, ImGuiDataType_S64, &v, &lo, &hi, "%lld",
-                                      clamp | ImGuiSliderFlags_Logarithmic);
-      else
-        changed = ImGui::DragScalar(name, ImGuiDataType_S64, &v, 0.2f, &lo, &hi, "%lld", clamp);
-      result = static_cast<double>(v);
-    } else {
-      double v = value;
-      ImGuiSliderFlags flags = clamp;
-      // Ranges over decades (distances, strengths) are easier to set on a log scale.
-      if (spec.minValue > 0.0 && spec.maxValue / spec.minValue >= 100.0)
-        flags |= ImGuiSliderFlags_Logarithmic;
-      changed = ImGui::SliderScalar(name, ImGuiDataType_Double, &v, &spec.minValue, &spec.maxValue,
-                                    "%.4g", flags);
-      result = v;
+    switch (spec.kind) {
+      case ParamKind::Switch: {
+        bool on = value != 0.0;
+        changed = ImGui::Checkbox(name, &on);
+        result = on ? 1.0 : 0.0;
+        break;
+      }
+      case ParamKind::Choice: {
+        const auto chosen = static_cast<size_t>(value);
+        if (ImGui::BeginCombo(name, spec.format(value).c_str())) {
+          for (size_t i = 0; i < spec.options.size(); ++i) {
+            if (ImGui::Selectable(spec.options[i].c_str(), i == chosen)) {
+              changed = i != chosen;
+              result = static_cast<double>(i);
+            }
+          }
+          ImGui::EndCombo();
+        }
+        break;
+      }
+      case ParamKind::Integer: {
+        // 64-bit: some limits (e.g. a ray budget) go far beyond int.
+        long long v = static_cast<long long>(value);
+        const long long lo = static_cast<long long>(spec.minValue);
+        const long long hi = static_cast<long long>(spec.maxValue);
+        if (hi - lo <= 64)
+          changed = ImGui::SliderScalar(name, ImGuiDataType_S64, &v, &lo, &hi, "%lld", clamp);
+        else if (lo > 0)  // counts over decades (rays per hit, budgets): a log scale
+          changed = ImGui::SliderScalar(name, ImGuiDataType_S64, &v, &lo, &hi, "%lld",
+                                        clamp | ImGuiSliderFlags_Logarithmic);
+        else
+          changed = ImGui::DragScalar(name, ImGuiDataType_S64, &v, 0.2f, &lo, &hi, "%lld", clamp);
+        result = static_cast<double>(v);
+        break;
+      }
+      case ParamKind::Real: {
+        double v = value;
+        ImGuiSliderFlags flags = clamp;
+        // Ranges over decades (distances, strengths) are easier to set on a log scale.
+        if (spec.minValue > 0.0 && spec.maxValue / spec.minValue >= 100.0)
+          flags |= ImGuiSliderFlags_Logarithmic;
+        changed = ImGui::SliderScalar(name, ImGuiDataType_Double, &v, &spec.minValue,
+                                      &spec.maxValue, "%.4g", flags);
+        result = v;
+        break;
+      }
     }
-    tooltip(spec.help + "\n(default " + formatParamValue(spec, spec.defaultValue) + ", range [" +
-            formatParamValue(spec, spec.minValue) + ", " + formatParamValue(spec, spec.maxValue) +
-            "]; Ctrl+click to type a value)");
+    const bool typed = spec.kind == ParamKind::Integer || spec.kind == ParamKind::Real;
+    tooltip(spec.help + "\n(default " + spec.format(spec.defaultValue) + ", " +
+            spec.describeRange() + (typed ? "; Ctrl+click to type a value)" : ")"));
     if (changed) setParamValue(state, lane, info, spec, result);
   }
 }
@@ -99,10 +121,8 @@ void integratorWidgets(ViewerState& state, int lane) {
   if (current) {
     // The quick switch between the student's version and the reference of the same stage.
     bool isReference = current->variant == Variant::Reference;
-    const std::string other =
-        variantIntegratorName("stage" + std::to_string(current->stage),
-                              isReference ? Variant::Student : Variant::Reference);
-    ImGui::BeginDisabled(!findInfo(other));
+    ImGui::BeginDisabled(
+        !findStageIntegrator(current->stage, isReference ? Variant::Student : Variant::Reference));
     if (ImGui::RadioButton("yours", !isReference) && isReference) toggleVariant(state, lane);
     ImGui::SameLine();
     if (ImGui::RadioButton("reference", isReference) && !isReference) toggleVariant(state, lane);
@@ -112,42 +132,57 @@ void integratorWidgets(ViewerState& state, int lane) {
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextDisabled("%s", current->summary.c_str());
     ImGui::PopTextWrapPos();
+    if (current->stage > 1 && !isReference) {
+      // Your stage N on the reference's earlier stages: what the grader checks in isolation.
+      bool reference = state.earlierStages[lane] == EarlierStages::Reference;
+      ImGui::BeginDisabled(!findStageIntegrator(1, Variant::Reference));
+      if (ImGui::Checkbox("reference's earlier stages", &reference))
+        state.earlierStages[lane] = reference ? EarlierStages::Reference : EarlierStages::Own;
+      ImGui::EndDisabled();
+      tooltip("On: this stage runs on the reference's stages 1-" +
+              std::to_string(current->stage - 1) +
+              " (filters, splat, hemisphere sampling), so you see this stage's own effect.");
+    }
     parameterWidgets(state, lane, *current);
   }
   ImGui::PopID();
 }
 
 void samplingWidgets(ViewerState& state, const PanelStatus& status) {
+  RenderSettings& settings = state.settings;
   const std::vector<std::string> filters = filterTypeNames();
-  int filter = static_cast<int>(state.filter);
+  const int filter = static_cast<int>(settings.filter);
   if (ImGui::BeginCombo("filter", filters[filter].c_str())) {
     for (size_t i = 0; i < filters.size(); ++i)
       if (ImGui::Selectable(filters[i].c_str(), static_cast<int>(i) == filter))
-        state.filter = parseFilterType(filters[i]);
+        settings.filter = parseFilterType(filters[i]);
     ImGui::EndCombo();
   }
-  ImGui::SliderFloat("filter radius", &state.filterRadius, 0.0f, kMaxFilterRadius,
-                     state.filterRadius > 0.0f ? "%.2f px" : "natural",
+  const auto& radius = setting::kFilterRadius;
+  ImGui::SliderFloat("filter radius", &settings.filterRadius, radius.minValue, radius.maxValue,
+                     settings.filterRadius > 0.0f ? "%.2f px" : "natural",
                      ImGuiSliderFlags_AlwaysClamp);
-  tooltip(
-      "Filter support in pixels; 0 uses the filter's natural radius (box 0.5, tent 1, "
-      "Mitchell 2, Gaussian 1.5).");
+  tooltip(radius.help);
   const std::vector<std::string> samplers = samplerTypeNames();
-  const int sampler = static_cast<int>(state.sampler);
+  const int sampler = static_cast<int>(settings.sampler);
   if (ImGui::BeginCombo("sampler", samplers[sampler].c_str())) {
     for (size_t i = 0; i < samplers.size(); ++i)
       if (ImGui::Selectable(samplers[i].c_str(), static_cast<int>(i) == sampler))
-        state.sampler = parseSamplerType(samplers[i]);
+        settings.sampler = parseSamplerType(samplers[i]);
     ImGui::EndCombo();
   }
-  ImGui::InputInt("seed", &state.seed);
-  state.seed = std::max(state.seed, 0);
-  ImGui::DragInt("spp target", &state.sppTarget, 8.0f, 1, 1 << 20, "%d",
-                 ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
-  tooltip("Samples per pixel at which the render stops.");
-  ImGui::SliderInt("spp per pass", &state.samplesPerPass, 1, 64, "%d",
-                   ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
-  tooltip("Samples added to every pixel before the image is shown again.");
+  ImGui::InputScalar("seed", ImGuiDataType_U64, &settings.seed);
+  tooltip(setting::kSeed.help);
+  const auto& spp = setting::kViewerSamplesPerPixel;
+  ImGui::DragScalar("spp target", ImGuiDataType_U32, &settings.samplesPerPixel, 8.0f, &spp.minValue,
+                    &spp.maxValue, "%u",
+                    ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
+  tooltip(spp.help);
+  const auto& perPass = setting::kSamplesPerPass;
+  ImGui::SliderScalar("spp per pass", ImGuiDataType_U32, &settings.samplesPerPass,
+                      &perPass.minValue, &perPass.maxValue, "%u",
+                      ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
+  tooltip(perPass.help);
   if (!status.fixedSize) {
     const char* resolutions[] = {"full", "1/2", "1/4"};
     int index = state.resolutionDivisor == 4 ? 2 : state.resolutionDivisor == 2 ? 1 : 0;
@@ -164,8 +199,8 @@ void displayWidgets(ViewerState& state, const PanelStatus& status) {
   ImGui::SameLine();
   ImGui::RadioButton("rays/sample", &mode, 2);
   state.display = static_cast<DisplayMode>(mode);
-  ImGui::SliderFloat("exposure", &state.exposure, -10.0f, 10.0f, "%+.1f stops",
-                     ImGuiSliderFlags_AlwaysClamp);
+  ImGui::SliderFloat("exposure", &state.exposure, setting::kExposure.minValue,
+                     setting::kExposure.maxValue, "%+.1f stops", ImGuiSliderFlags_AlwaysClamp);
   if (state.display != DisplayMode::Color) {
     const char* what = state.display == DisplayMode::Variance ? "variance" : "rays per sample";
     ImGui::PushTextWrapPos(0.0f);

@@ -5,7 +5,6 @@
 #include <exception>
 
 #include "core/error.h"
-#include "film/pixel_filter.h"
 #include "render/integrator_registry.h"
 #include "scene/camera.h"
 
@@ -15,13 +14,6 @@ namespace {
 // Developing an image costs about as much as a cheap pass, so publish no more often than a
 // display refreshes; the last pass before the worker rests is always published.
 constexpr std::chrono::milliseconds kPublishInterval{16};
-
-bool sameSettings(const RenderSettings& a, const RenderSettings& b) {
-  return a.width == b.width && a.height == b.height && a.samplesPerPixel == b.samplesPerPixel &&
-         a.samplesPerPass == b.samplesPerPass && a.sampler == b.sampler && a.seed == b.seed &&
-         a.threads == b.threads && a.filter == b.filter && a.filterRadius == b.filterRadius &&
-         a.tileSize == b.tileSize;
-}
 
 void mergeTodos(std::vector<TodoRecord>& into, const std::vector<TodoRecord>& hit) {
   for (const TodoRecord& todo : hit) {
@@ -35,17 +27,13 @@ void mergeTodos(std::vector<TodoRecord>& into, const std::vector<TodoRecord>& hi
 }  // namespace
 
 bool WorkerJob::operator==(const WorkerJob& o) const {
-  return scene == o.scene && lanes == o.lanes && sameSettings(settings, o.settings) &&
-         camera == o.camera && balance == o.balance && budget == o.budget;
+  return scene == o.scene && lanes == o.lanes && settings == o.settings && camera == o.camera &&
+         balance == o.balance && budget == o.budget;
 }
 
 struct RenderWorker::Lane {
   std::string integrator;
-  std::map<std::string, double> params;
-  // The renderer refers to the camera and the integrators, so a Lane never moves (unique_ptr).
-  std::unique_ptr<Integrator> integratorObject;
-  std::unique_ptr<Camera> camera;
-  std::unique_ptr<Renderer> renderer;
+  std::unique_ptr<RenderSession> session;  // null when the lane could not start or failed
   std::vector<TodoRecord> todos;
   std::string error;
   bool dirty = false;      // passes done since the last publish
@@ -153,27 +141,21 @@ void RenderWorker::start(WorkerJob job, uint64_t id, Clock::time_point submitted
     try {
       if (!scene_) throw PathwayError("no scene is loaded");
       const IntegratorInfo& info = findIntegrator(laneJob.integrator);
-      ParamValues values;
-      for (const ParamSpec& spec : info.params) {
-        const auto given = laneJob.params.find(spec.name);
-        double value = given != laneJob.params.end() ? given->second : spec.defaultValue;
-        value = std::clamp(value, spec.minValue, spec.maxValue);
-        if (spec.isInteger) value = std::round(value);
-        values.set(spec.name, value);
-        lane->params[spec.name] = value;
-      }
-      clearTodosHit();
-      lane->integratorObject = info.create(values, scene_->scene);
-      const RenderSettings& s = job.settings;
+      RenderRecipe recipe;
+      recipe.integrator = info.name;
+      recipe.params = ParamValues(info.params);
+      // The panel's widgets only produce values the parameters accept; anything else is refused.
+      for (const auto& [name, value] : laneJob.params) recipe.params.set(info.name, name, value);
+      recipe.earlierStages = laneJob.earlierStages;
+      recipe.settings = job.settings;
       const CameraPose& pose = job.camera;
-      lane->camera = std::make_unique<Camera>(pose.position, pose.lookAt, pose.up, pose.yfov,
-                                              s.width, s.height);
-      lane->renderer =
-          std::make_unique<Renderer>(*scene_->tracer, *lane->camera, *lane->integratorObject,
-                                     filterFunctions(info.variant), s);
+      const Camera camera(pose.position, pose.lookAt, pose.up, pose.yfov, recipe.settings.width,
+                          recipe.settings.height);
+      clearTodosHit();
+      lane->session = std::make_unique<RenderSession>(*scene_->tracer, camera, recipe);
       mergeTodos(lane->todos, todosHit());
     } catch (const std::exception& error) {
-      lane->renderer.reset();
+      lane->session.reset();
       lane->error = error.what();
     }
     lanes_.push_back(std::move(lane));
@@ -183,18 +165,18 @@ void RenderWorker::start(WorkerJob job, uint64_t id, Clock::time_point submitted
 
 int RenderWorker::nextLane() const {
   auto measure = [this](const Lane& lane) {
-    const RenderStats& stats = lane.renderer->stats();
+    const RenderStats& stats = lane.session->renderer().stats();
     return balance_ == Balance::EqualTime ? stats.seconds
                                           : static_cast<double>(stats.counters.totalRays());
   };
   int behind = -1;
   for (size_t i = 0; i < lanes_.size(); ++i) {
-    if (!lanes_[i]->renderer) continue;  // failed to start
+    if (!lanes_[i]->session) continue;  // failed to start
     if (behind < 0 || measure(*lanes_[i]) < measure(*lanes_[behind])) behind = static_cast<int>(i);
   }
   if (behind < 0) return -1;
   const Lane& lane = *lanes_[behind];
-  if (lane.renderer->finished()) return -1;  // the one behind cannot catch up: stop both
+  if (lane.session->renderer().finished()) return -1;  // the one behind cannot catch up: stop both
   if (lanes_.size() > 1 && budget_ > 0.0 && measure(lane) >= budget_) return -1;
   return behind;
 }
@@ -205,11 +187,11 @@ void RenderWorker::renderPass(size_t index) {
   passStart_ = Clock::now().time_since_epoch().count();
   try {
     clearTodosHit();
-    completed = lane.renderer->renderPass(&cancel_);
+    completed = lane.session->renderer().renderPass(&cancel_);
     mergeTodos(lane.todos, todosHit());
   } catch (const std::exception& error) {  // a stage that throws must not take the viewer down
     lane.error = error.what();
-    lane.renderer.reset();
+    lane.session.reset();
     completed = true;
   }
   passStart_ = 0;
@@ -217,7 +199,7 @@ void RenderWorker::renderPass(size_t index) {
   ++passes_;
   lane.dirty = true;
   const bool due = !lane.published || Clock::now() - lane.lastPublish >= kPublishInterval ||
-                   !lane.renderer || lane.renderer->finished();
+                   !lane.session || lane.session->renderer().finished();
   if (due) publish(index);
 }
 
@@ -233,17 +215,18 @@ void RenderWorker::publish(size_t index) {
   frame->scenePath = scene_ ? scene_->scene.sourcePath : "";
   frame->camera = camera_;
   frame->integrator = lane.integrator;
-  frame->params = lane.params;
   frame->todos = lane.todos;
   frame->error = lane.error;
-  if (lane.renderer) {
-    const Renderer& renderer = *lane.renderer;
-    const Film& film = renderer.film();
+  if (lane.session) {
+    const Renderer& renderer = lane.session->renderer();
+    RenderResult result = lane.session->develop(lane.todos);
+    frame->params = lane.session->recipe().params;
+    frame->earlierStages = lane.session->recipe().earlierStages;
     frame->settings = renderer.settings();
-    frame->stats = renderer.stats();
-    frame->images.color = film.develop(&frame->unresolvedPixels);
-    frame->images.variance = film.variance();
-    frame->images.weight = film.weights();
+    frame->stats = result.stats;
+    frame->images = std::move(result.images);
+    frame->unresolvedPixels = result.unresolvedPixels;
+    frame->metadata = std::move(result.metadata);
     const float perSample = 1.0f / static_cast<float>(std::max(1u, frame->stats.samplesPerPixel));
     frame->raysPerSample.clear();
     for (uint64_t rays : renderer.raysPerPixel())

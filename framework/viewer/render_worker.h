@@ -24,7 +24,7 @@
 
 #include "core/todo.h"
 #include "io/image_io.h"
-#include "render/renderer.h"
+#include "render/render_session.h"
 #include "viewer/loaded_scene.h"
 #include "viewer/orbit_camera.h"
 
@@ -33,9 +33,10 @@ namespace pathway {
 struct LaneJob {
   std::string integrator;                // registry name, "stage2" or "stage2@ref"
   std::map<std::string, double> params;  // by name; missing ones take their declared default
+  EarlierStages earlierStages = EarlierStages::Own;
 
   bool operator==(const LaneJob& o) const {
-    return integrator == o.integrator && params == o.params;
+    return integrator == o.integrator && params == o.params && earlierStages == o.earlierStages;
   }
 };
 
@@ -60,7 +61,8 @@ struct LaneFrame {
   std::string scenePath;
   CameraPose camera;
   std::string integrator;
-  std::map<std::string, double> params;  // the values used, every declared parameter
+  ParamValues params;  // the values used, every declared parameter
+  EarlierStages earlierStages = EarlierStages::Own;
   RenderSettings settings;
   FilmImages images;                 // developed colour, variance, Σw
   std::vector<float> raysPerSample;  // per pixel, rows top to bottom
@@ -69,6 +71,7 @@ struct LaneFrame {
   double firstImageSeconds = 0.0;  // from submit() to this job's first image of this lane
   std::vector<TodoRecord> todos;   // unfinished stage code this lane ran
   std::string error;               // the lane could not render (refused parameters, ...)
+  ImageMetadata metadata;          // the "pathway:*" keys `pathway render` writes
 };
 
 class RenderWorker {

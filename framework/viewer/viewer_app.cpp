@@ -166,7 +166,9 @@ void Viewer::frame(const std::string& screenshotPath) {
       text_.sceneMessage = "loading " + path + "...";
       text_.sceneFailed = false;
       // Loading and building the BVH can take a while for big scenes: not on the UI thread.
-      loading_ = std::async(std::launch::async, [path] { return LoadedScene::load(path); });
+      const SceneLoadOptions load{state_.strictScene};
+      loading_ =
+          std::async(std::launch::async, [path, load] { return LoadedScene::load(path, load); });
       break;
     }
     case PanelAction::SaveExr:

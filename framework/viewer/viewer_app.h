@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "render/render_choices.h"
 #include "viewer/gl_display.h"
 #include "viewer/image_view.h"
 #include "viewer/panel.h"
@@ -19,21 +20,15 @@
 namespace pathway {
 
 struct ViewerOptions {
-  std::string scene;
-  std::string integrator = "stage1";
-  std::vector<std::string> params;  // name=value
-  std::string splitIntegrator;      // non-empty: split view with this on the right
+  RenderChoices choices;        // scene, integrator, parameters, sampler, seed, filter
+  std::string splitIntegrator;  // non-empty: split view with this on the right
   std::vector<std::string> splitParams;
   std::string balance = "time";  // split view: "time" or "rays"
   int windowWidth = 1280, windowHeight = 720;
   int width = 0, height = 0;  // render size; 0: follow the pane
-  uint32_t spp = 4096;
-  uint32_t samplesPerPass = 1;
-  std::string sampler;  // empty: the stage's usual sampler
-  uint64_t seed = 0;
-  std::string filter = "box";
-  float filterRadius = 0.0f;
-  float exposure = 0.0f;
+  uint32_t spp = setting::kViewerSamplesPerPixel.defaultValue;
+  uint32_t samplesPerPass = setting::kSamplesPerPass.defaultValue;
+  float exposure = setting::kExposure.defaultValue;
   std::string display = "color";
   bool showHelp = false;  // open with the keys-and-mouse overlay
   bool headless = false;

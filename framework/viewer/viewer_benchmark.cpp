@@ -88,23 +88,23 @@ int runViewerBenchmark(const ViewerOptions& given) {
   ViewerOptions options = given;
   if (options.width <= 0) options.width = 640;
   if (options.height <= 0) options.height = 360;
-  options.spp = 1u << 20;  // never finishes during the measurement
+  options.spp = setting::kViewerSamplesPerPixel.maxValue;  // never finishes while measured
   std::vector<std::string> names;
-  for (const char* name : {"stage1@ref", "stage3@ref", "stage5@ref"})
-    for (const IntegratorInfo* info : allIntegrators())
-      if (info->name == name) names.push_back(name);
+  for (int stage : {1, 3, 5})
+    if (findStageIntegrator(stage, Variant::Reference))
+      names.push_back(stageIntegratorName(stage, Variant::Reference));
   if (names.empty()) names.push_back("stage1");  // a student handout has no references
-  auto scene = LoadedScene::load(options.scene);
+  auto scene = LoadedScene::load(options.choices.scene, {options.choices.strictScene});
 
   std::printf(
       "viewer benchmark: %s, %dx%d render, %u spp per pass, %.1f s each, %u hardware threads\n",
-      options.scene.c_str(), options.width, options.height, options.samplesPerPass,
+      options.choices.scene.c_str(), options.width, options.height, options.samplesPerPass,
       options.benchmarkSeconds, std::thread::hardware_concurrency());
   std::printf("%-11s | %-31s | %-33s\n", "", "headless viewer (OSMesa UI)", "render worker alone");
   std::printf("%-11s | %8s %8s %6s %6s | %8s %8s %7s %6s\n", "integrator", "first ms", "shown ms",
               "img/s", "UI fps", "first ms", "passes/s", "Mrays/s", "spp");
   for (const std::string& name : names) {
-    options.integrator = name;
+    options.choices.integrator = name;
     const Figures viewer = measureViewer(options, scene);
     const Figures worker = measureWorker(options, scene);
     std::printf("%-11s | %8.1f %8.1f %6.1f %6.1f | %8.1f %8.1f %7.1f %6u\n", name.c_str(),

@@ -3,14 +3,13 @@
 // draws that many frames and writes a screenshot.
 #include <algorithm>
 #include <chrono>
-#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <map>
 
 #include "core/error.h"
 #include "render/integrator_registry.h"
-#include "render/parameters.h"
+#include "render/render_choices.h"
 #include "viewer/viewer_app.h"
 
 namespace pathway {
@@ -20,27 +19,29 @@ double now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-void applyParams(ViewerState& state, int lane, const std::string& integrator,
-                 const std::vector<std::string>& assignments) {
-  const IntegratorInfo& info = findIntegrator(integrator);
-  std::map<std::string, std::string> given;
-  for (const std::string& assignment : assignments) given.insert(splitParamAssignment(assignment));
-  const ParamValues values = resolveParams(info.name, info.params, given);
+// Puts a checked recipe's integrator, parameters and earlier stages into pane `lane`.
+void applyRecipe(ViewerState& state, int lane, const RenderRecipe& recipe) {
+  const IntegratorInfo& info = findIntegrator(recipe.integrator);
   for (const ParamSpec& spec : info.params)
-    setParamValue(state, lane, info, spec, values.number(spec.name));
+    setParamValue(state, lane, info, spec, recipe.params.number(spec.name));
   state.integrator[lane] = info.name;
+  state.earlierStages[lane] = recipe.earlierStages;
 }
 
 }  // namespace
 
 ViewerState initialState(const ViewerOptions& options) {
   ViewerState state;
-  const IntegratorInfo& info = findIntegrator(options.integrator);
-  applyParams(state, 0, info.name, options.params);
-  state.sampler = options.sampler.empty() ? info.defaultSampler : parseSamplerType(options.sampler);
+  // The same checks as `pathway render`: unknown names and refused values stop here.
+  const RenderRecipe left = options.choices.recipe();
+  applyRecipe(state, 0, left);
   state.integrator[1] = state.integrator[0];
+  state.earlierStages[1] = state.earlierStages[0];
   if (!options.splitIntegrator.empty()) {
-    applyParams(state, 1, options.splitIntegrator, options.splitParams);
+    RenderChoices right = options.choices;
+    right.integrator = options.splitIntegrator;
+    right.params = options.splitParams;
+    applyRecipe(state, 1, right.recipe());
     state.split = true;
   }
   if (options.balance == "time")
@@ -49,11 +50,13 @@ ViewerState initialState(const ViewerOptions& options) {
     state.balance = Balance::EqualRays;
   else
     throw PathwayError("unknown balance '" + options.balance + "' (time or rays)");
-  state.filter = parseFilterType(options.filter);
-  state.filterRadius = options.filterRadius;
-  state.seed = static_cast<int>(std::min<uint64_t>(options.seed, INT_MAX));
-  state.sppTarget = static_cast<int>(std::min<uint32_t>(options.spp, 1u << 20));
-  state.samplesPerPass = static_cast<int>(std::min(options.samplesPerPass, options.spp));
+  state.settings.sampler = left.settings.sampler;
+  state.settings.seed = left.settings.seed;
+  state.settings.filter = left.settings.filter;
+  state.settings.filterRadius = left.settings.filterRadius;
+  state.settings.samplesPerPixel = options.spp;
+  state.settings.samplesPerPass = options.samplesPerPass;
+  state.settings.check();
   state.exposure = options.exposure;
   if (options.display == "color" || options.display == "colour")
     state.display = DisplayMode::Color;
@@ -64,6 +67,7 @@ ViewerState initialState(const ViewerOptions& options) {
   else
     throw PathwayError("unknown display '" + options.display + "' (color, variance or rays)");
   state.showHelp = options.showHelp;
+  state.strictScene = options.choices.strictScene;
   state.fixedWidth = options.width;
   state.fixedHeight = options.height;
   return state;
@@ -72,7 +76,7 @@ ViewerState initialState(const ViewerOptions& options) {
 int runViewer(const ViewerOptions& options) {
   if (options.benchmark) return runViewerBenchmark(options);
   ViewerState state = initialState(options);  // bad names fail before any window opens
-  auto scene = LoadedScene::load(options.scene);
+  auto scene = LoadedScene::load(options.choices.scene, {options.choices.strictScene});
   if ((state.fixedWidth > 0) != (state.fixedHeight > 0)) {
     // One side given: the other from the scene camera's aspect ratio, as `pathway render` does.
     const float aspect = scene->scene.camera && scene->scene.camera->aspectRatio

@@ -11,23 +11,25 @@
 
 #include "film/pixel_filter.h"
 #include "render/integrator_registry.h"
-#include "render/renderer.h"
+#include "render/render_settings.h"
 #include "sampling/sampler.h"
 #include "viewer/display_image.h"
 #include "viewer/render_worker.h"
 
 namespace pathway {
 
-struct ViewerState {
-  std::string integrator[2] = {"stage1", "stage1"};         // left (or only) pane, right pane
-  std::map<std::pair<int, std::string>, double> params[2];  // (stage, name) -> value
+// The viewer's render settings before the panes give them a size: it refines progressively, so it
+// aims at more samples per pixel than `pathway render`.
+RenderSettings progressiveSettings();
 
-  FilterType filter = FilterType::Box;
-  float filterRadius = 0.0f;  // 0: the filter's natural radius
-  SamplerType sampler = SamplerType::Independent;
-  int seed = 0;
-  int sppTarget = 4096;
-  int samplesPerPass = 1;
+struct ViewerState {
+  std::string integrator[2] = {"stage1", "stage1"};  // left (or only) pane, right pane
+  EarlierStages earlierStages[2] = {EarlierStages::Own, EarlierStages::Own};
+  // (stage, name) -> value, every value one the parameter accepts (the widgets and the command
+  // line refuse others, nothing clamps).
+  std::map<std::pair<int, std::string>, double> params[2];
+
+  RenderSettings settings = progressiveSettings();  // width and height: set per job
   int resolutionDivisor = 1;            // render at 1/1, 1/2 or 1/4 of the pane's pixels
   int fixedWidth = 0, fixedHeight = 0;  // from --width/--height; 0: follow the pane
 
@@ -41,10 +43,13 @@ struct ViewerState {
 
   bool paused = false;
   bool showHelp = false;
+  bool strictScene = false;  // scenes opened from the panel: refuse required lamps (--strict)
 };
 
+// The pane's value of a parameter: the one set for its stage, else the declared default.
 double paramValue(const ViewerState& state, int lane, const IntegratorInfo& info,
                   const ParamSpec& spec);
+// Throws PathwayError (naming the parameter and its range) for a value it does not accept.
 void setParamValue(ViewerState& state, int lane, const IntegratorInfo& info, const ParamSpec& spec,
                    double value);
 

@@ -62,17 +62,10 @@ void splat(FilmBlock& film, Vec2 p, const Color& radiance, const PixelFilter& fi
   }
 }
 
-const bool registered = [] {
-  registerFilterFunctions(PATHWAY_THIS_VARIANT,
-                          {boxFilter, tentFilter, mitchellNetravaliFilter, gaussianFilter, splat});
-  return registerIntegrator(
-      {variantIntegratorName("stage1", PATHWAY_THIS_VARIANT),
-       1,
-       PATHWAY_THIS_VARIANT,
-       "filtered supersampling: pixel filters and the splat, eye-light shading",
-       {},
-       [](const ParamValues&, const Scene&) { return std::make_unique<EyeLightIntegrator>(); }});
-}();
+// Stage 1 hands its filters and splat on to every later stage; its shading is the framework's
+// eye light.
+const bool registered = registerStage<EyeLightIntegrator>(
+    1, Stage1Functions{{boxFilter, tentFilter, mitchellNetravaliFilter, gaussianFilter}, splat});
 
 }  // namespace
 }  // namespace pathway

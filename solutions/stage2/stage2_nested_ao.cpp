@@ -29,26 +29,28 @@ float cosineHemispherePdf(float cosTheta) {
 }
 
 // One AO direction: V(P, ω)·cos θ / (π·p(ω)).
-float ambientOcclusionSample(RenderContext& context, const SurfaceHit& hit, Vec2 u,
+float ambientOcclusionSample(const RenderContext& context, const SurfaceHit& hit, Vec2 u,
                              float distance) {
   const Vec3 local = sampleCosineHemisphere(u);
   const float pdf = cosineHemispherePdf(local.z);
   if (pdf <= 0.0f) return 0.0f;  // a direction in the surface plane carries no weight
   const Vec3 direction = Frame(hit.normal).toWorld(local);
   // A unit direction and tMax = D: the ray looks for blockers up to distance D, no further.
-  const Ray aoRay = RayTracer::spawnRay(hit, direction, distance);
-  const bool blocked = context.tracer.occluded(aoRay, RayKind::Secondary, context.counters);
+  const Ray aoRay = hit.spawnRay(direction, distance);
+  const bool blocked = context.occluded(aoRay, RayKind::Secondary);
   const float visibility = blocked ? 0.0f : 1.0f;
   return visibility * local.z / (kPi * pdf);
 }
 
 class NestedAmbientOcclusion : public Integrator {
  public:
-  NestedAmbientOcclusion(int aoRays, float aoDistance) : aoRays_(aoRays), aoDistance_(aoDistance) {}
+  explicit NestedAmbientOcclusion(const IntegratorSetup& setup)
+      : aoRays_(setup.params.integer("ao-rays")), aoDistance_(setup.params.real("ao-distance")) {}
 
-  Color Li(const Ray& cameraRay, SampleStream& samples, RenderContext& context) const override {
-    const auto hit = context.tracer.intersect(cameraRay, RayKind::Primary, context.counters);
-    if (!hit) return context.scene.background;
+  Color Li(const Ray& cameraRay, SampleStream& samples,
+           const RenderContext& context) const override {
+    const auto hit = context.intersect(cameraRay, RayKind::Primary);
+    if (!hit) return context.background();
     // The inner integral: M directions for this one eye sample, each with its own 2D sample.
     float sum = 0.0f;
     for (int j = 0; j < aoRays_; ++j)
@@ -57,27 +59,13 @@ class NestedAmbientOcclusion : public Integrator {
   }
 
  private:
-  int aoRays_;
-  float aoDistance_;
+  int aoRays_;        // M
+  float aoDistance_;  // D
 };
 
-const bool registered = [] {
-  StageKit& kit = stageKit(PATHWAY_THIS_VARIANT);
-  kit.sampleCosineHemisphere = sampleCosineHemisphere;
-  kit.cosineHemispherePdf = cosineHemispherePdf;
-  kit.ambientOcclusionSample = ambientOcclusionSample;
-  return registerIntegrator(
-      {variantIntegratorName("stage2", PATHWAY_THIS_VARIANT),
-       2,
-       PATHWAY_THIS_VARIANT,
-       "nested AO: per eye sample, M cosine-weighted AO rays of length D",
-       {{"ao-rays", 4, 1, 1024, true, "M: AO rays per eye sample"},
-        {"ao-distance", 0.25, 1e-6, 1e6, false, "D: how far an AO ray looks for blockers"}},
-       [](const ParamValues& p, const Scene&) {
-         return std::make_unique<NestedAmbientOcclusion>(
-             p.integer("ao-rays"), static_cast<float>(p.number("ao-distance")));
-       }});
-}();
+// Stage 2 hands its hemisphere sampling and AO estimate on to stages 3-5.
+const bool registered = registerStage<NestedAmbientOcclusion>(
+    2, Stage2Functions{sampleCosineHemisphere, cosineHemispherePdf, ambientOcclusionSample});
 
 }  // namespace
 }  // namespace pathway

@@ -14,33 +14,25 @@ namespace {
 
 class AmbientOcclusion4D : public Integrator {
  public:
-  AmbientOcclusion4D(float aoDistance, const StageKit& kit) : aoDistance_(aoDistance), kit_(kit) {}
+  explicit AmbientOcclusion4D(const IntegratorSetup& setup)
+      : aoDistance_(setup.params.real("ao-distance")), stage2_(setup.kit.stage2()) {}
 
-  Color Li(const Ray& cameraRay, SampleStream& samples, RenderContext& context) const override {
+  Color Li(const Ray& cameraRay, SampleStream& samples,
+           const RenderContext& context) const override {
     // Dimensions 0-1 of this sample placed the eye ray in the pixel (the renderer did that);
     // dimensions 2-3 of the SAME 4D point choose the AO direction.
     const Vec2 directionSample = samples.next2D();
-    const auto hit = context.tracer.intersect(cameraRay, RayKind::Primary, context.counters);
-    if (!hit) return context.scene.background;
-    return Color(kit_.ambientOcclusionSample(context, *hit, directionSample, aoDistance_));
+    const auto hit = context.intersect(cameraRay, RayKind::Primary);
+    if (!hit) return context.background();
+    return Color(stage2_.ambientOcclusionSample(context, *hit, directionSample, aoDistance_));
   }
 
  private:
-  float aoDistance_;
-  const StageKit& kit_;  // stage 2 of the same variant: cosine sampling and the AO estimate
+  float aoDistance_;               // D
+  const Stage2Functions& stage2_;  // stage 2: cosine sampling and the AO estimate
 };
 
-const bool registered = registerIntegrator(
-    {variantIntegratorName("stage3", PATHWAY_THIS_VARIANT),
-     3,
-     PATHWAY_THIS_VARIANT,
-     "4D AO: one sample = (x, y, direction) drawn together; one eye ray + one AO ray",
-     {{"ao-distance", 0.25, 1e-6, 1e6, false, "D: how far an AO ray looks for blockers"}},
-     [](const ParamValues& p, const Scene&) {
-       return std::make_unique<AmbientOcclusion4D>(static_cast<float>(p.number("ao-distance")),
-                                                   stageKit(PATHWAY_THIS_VARIANT));
-     },
-     SamplerType::Sobol});
+const bool registered = registerStage<AmbientOcclusion4D>(3);
 
 }  // namespace
 }  // namespace pathway

@@ -1,0 +1,30 @@
+// What a user chooses for a render before it is checked, as `pathway render` and `pathway view`
+// read it from their shared options: names and text. recipe() checks it into a RenderRecipe.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "render/render_session.h"
+
+namespace pathway {
+
+struct RenderChoices {
+  std::string scene;
+  std::string integrator = "stage1";
+  std::vector<std::string> params;    // "name=value", checked against the integrator's declarations
+  std::string earlierStages = "own";  // "own" or "reference" (see EarlierStages)
+  std::string sampler;                // empty: the integrator's own default
+  uint64_t seed = setting::kSeed.defaultValue;
+  std::string filter = filterTypeName(setting::kFilter);
+  float filterRadius = setting::kFilterRadius.defaultValue;  // 0: the filter's natural radius
+  bool strictScene = false;  // refuse a scene requiring lamps instead of ignoring them (--strict)
+
+  // The recipe these choices describe: integrator, parameters, earlier stages, sampler, seed and
+  // filter (the other settings keep their defaults). Throws PathwayError naming the first unknown
+  // name or refused value.
+  RenderRecipe recipe() const;
+};
+
+}  // namespace pathway

@@ -1,0 +1,34 @@
+#include "render/render_settings.h"
+
+#include "core/error.h"
+
+namespace pathway {
+namespace {
+
+template <typename T>
+void require(const SettingSpec<T>& spec, T value) {
+  if (!spec.accepts(value))
+    throw PathwayError(std::string(spec.name) + " must be in [" + std::to_string(spec.minValue) +
+                       ", " + std::to_string(spec.maxValue) + "], got " + std::to_string(value));
+}
+
+}  // namespace
+
+void RenderSettings::check() const {
+  require(setting::kWidth, width);
+  require(setting::kHeight, height);
+  require(setting::kSamplesPerPixel, samplesPerPixel);
+  require(setting::kSamplesPerPass, samplesPerPass);
+  require(setting::kThreads, threads);
+  require(setting::kFilterRadius, filterRadius);
+  require(setting::kTileSize, tileSize);
+}
+
+bool RenderSettings::operator==(const RenderSettings& o) const {
+  return width == o.width && height == o.height && samplesPerPixel == o.samplesPerPixel &&
+         samplesPerPass == o.samplesPerPass && sampler == o.sampler && seed == o.seed &&
+         threads == o.threads && filter == o.filter && filterRadius == o.filterRadius &&
+         tileSize == o.tileSize;
+}
+
+}  // namespace pathway
