@@ -31,8 +31,9 @@ import zlib
 from array import array
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gltf_check import (EMISSIVE_STRENGTH, GltfError, add, centroid, check_gltf,  # noqa: E402
-                        cross, dot, f32, normalize, scale, sub, transform_point, transform_vector)
+from gltf_check import (EMISSIVE_STRENGTH, GltfError, add, camera_ray, centroid,  # noqa: E402
+                        check_gltf, cross, dot, f32, normalize, scale, sub, trace,
+                        transform_point, transform_vector)
 
 GENERATOR = "Pathway scenes/generate.py"
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -608,6 +609,206 @@ def textured_quad():
     return b.build(background=(1.0, 1.0, 1.0))
 
 
+def rotate_y(v, angle):
+    """v turned by `angle` radians about +Y (right-handed: +Z goes towards +X)."""
+    c, s = math.cos(angle), math.sin(angle)
+    return (c * v[0] + s * v[2], v[1], -s * v[0] + c * v[2])
+
+
+def rotate_z(v, angle):
+    """v turned by `angle` radians about +Z (+X goes towards +Y)."""
+    c, s = math.cos(angle), math.sin(angle)
+    return (c * v[0] - s * v[1], s * v[0] + c * v[1], v[2])
+
+
+def panel(center, u, v, s0, s1, t0, t1):
+    """The rectangle center + s u + t v, s in [s0, s1], t in [t0, t1], facing along u x v."""
+    def at(s, t):
+        return tuple(tidy(c) for c in add(center, add(scale(u, s), scale(v, t))))
+    return quad(at(s0, t0), at(s1, t0), at(s1, t1), at(s0, t1))
+
+
+def block(cx, cz, half_x, half_z, height, yaw):
+    """An upright box on the floor (y in [0, height]) turned by `yaw` about +Y: its top and four
+    sides, facing outward (no bottom: it stands on the floor)."""
+    u, w = rotate_y((1.0, 0.0, 0.0), yaw), rotate_y((0.0, 0.0, 1.0), yaw)
+    up = (0.0, 1.0, 0.0)
+    centre = (cx, 0.0, cz)
+    return merge(
+        panel(add(centre, (0.0, height, 0.0)), w, u, -half_z, half_z, -half_x, half_x),  # top
+        panel(add(centre, scale(w, half_z)), u, up, -half_x, half_x, 0.0, height),        # +w
+        panel(add(centre, scale(w, -half_z)), up, u, 0.0, height, -half_x, half_x),       # -w
+        panel(add(centre, scale(u, half_x)), up, w, 0.0, height, -half_z, half_z),        # +u
+        panel(add(centre, scale(u, -half_x)), w, up, -half_z, half_z, 0.0, height))       # -u
+
+
+def grading_edges():
+    """Grading scene for stage 1 (pixel filters and the splat under eye-light shading: albedo
+    |cos theta| + emission, the background where a ray misses). 4:3 camera (256 x 192 at
+    --width 256) looking down -Z at a collage of flat, sharp-edged parts 2.6 .. 3.7 m away, in
+    front of a constant background (0.25, 0.3, 0.4) that fills about a third of the frame and
+    meets geometry along many edges and along the image border.
+
+    Parts and what they test:
+      - star (upper left): a Siemens star, 64 wedges of radius 0.8 m alternating dark
+        (albedo 0.05) with white 0.9, red (0.9, 0.15, 0.1) and blue (0.1, 0.3, 0.9): edges at
+        64 orientations, and towards the centre wedges narrower than a pixel, where the image
+        depends on the filter's exact support and weights (aliasing vs. blur);
+      - bars (upper right): axis-aligned white / yellow / green bars 0.16 m .. 0.02 m wide
+        (about 14 .. 1.8 pixels at 256 wide) with background gaps of the same width, over a
+        horizontal bar: vertical and horizontal edges against the background, where a
+        half-pixel offset in the splat or in the filter's argument shifts every edge;
+      - stripes (lower right, running off the right and bottom image borders): a panel of
+        16 stripes (white 0.9 / dark 0.05 / green (0.15, 0.7, 0.2)) widening from 0.015 m
+        (about one pixel at 256 wide) to 0.2 m, turned 25 degrees about Z and -40 degrees about
+        Y, so they recede in perspective and their |cos theta| shading varies; the filter's
+        support at the image border (footprints that leave the image);
+      - emitter (lower middle): a 0.3 m square turned 30 degrees, black albedo, emission 2,
+        partly over the purple wedge, partly over the background: the brightest edges, which
+        show a filter's negative lobes (Mitchell) and wrong normalisation most;
+      - sphere (lower left): an icosphere (2 subdivisions, 320 triangles, radius 0.3 m, albedo
+        (0.8, 0.7, 0.5)): curved silhouette against the background, smooth shading;
+      - wedge and sliver: a purple triangle tilted in depth (albedo (0.5, 0.1, 0.6)) over the
+        star's lower edge and the background, and a thin dark sliver (albedo 0.05) lying 5
+        degrees off horizontal across the bars: occlusion edges between two surfaces.
+    Every part faces the camera (no back faces are seen). No closed form: compare against the
+    reference stage 1 with the same filter, sampler, seed and spp.
+    """
+    b = GltfBuilder()
+    dark = b.material("dark", (0.05, 0.05, 0.05))
+    white = b.material("white", (0.9, 0.9, 0.9))
+    red = b.material("red", (0.9, 0.15, 0.1))
+    blue = b.material("blue", (0.1, 0.3, 0.9))
+    yellow = b.material("yellow", (0.9, 0.8, 0.1))
+    green = b.material("green", (0.15, 0.7, 0.2))
+    purple = b.material("purple", (0.5, 0.1, 0.6))
+    tan = b.material("tan", (0.8, 0.7, 0.5))
+    glow = b.material("emitter", (0.0, 0.0, 0.0), emission=(2.0, 2.0, 2.0))
+
+    # Siemens star in the plane z = 0, wedges wound counter-clockwise seen from +z.
+    centre, radius, wedges, turn = (-0.68, 0.27, 0.0), 0.8, 64, 0.013
+    rims = [(centre[0] + radius * math.cos(turn + 2.0 * math.pi * i / wedges),
+             centre[1] + radius * math.sin(turn + 2.0 * math.pi * i / wedges), 0.0)
+            for i in range(wedges)]
+    star = {"star_dark": [], "star_white": [], "star_red": [], "star_blue": []}
+    for i in range(wedges):
+        kind = "star_dark" if i % 2 == 0 else ("star_white", "star_red", "star_white",
+                                                "star_blue")[(i // 2) % 4]
+        star[kind].append(([centre, rims[i], rims[(i + 1) % wedges]], [(0, 1, 2)]))
+    for name, mat in (("star_dark", dark), ("star_white", white), ("star_red", red),
+                      ("star_blue", blue)):
+        b.mesh(name, *merge(*star[name]), mat)
+
+    # Axis-aligned bars at z = 0.1: widths shrink, gaps (background) as wide as the bar before.
+    x, bars = 0.25, {"bars_white": [], "bars_yellow": [], "bars_green": []}
+    for k, width in enumerate((0.16, 0.12, 0.09, 0.06, 0.04, 0.03, 0.02)):
+        kind = ("bars_white", "bars_yellow", "bars_green")[k % 3]
+        bars[kind].append(quad((x, 0.55, 0.1), (x + width, 0.55, 0.1), (x + width, 1.15, 0.1),
+                               (x, 1.15, 0.1)))
+        x += 2.0 * width
+    bars["bars_white"].append(quad((0.25, 0.38, 0.1), (x, 0.38, 0.1), (x, 0.47, 0.1),
+                                   (0.25, 0.47, 0.1)))
+    for name, mat in (("bars_white", white), ("bars_yellow", yellow), ("bars_green", green)):
+        b.mesh(name, *merge(*bars[name]), mat)
+    # A thin dark sliver in front of the bars, 5 degrees off horizontal.
+    a = math.radians(5.0)
+    d = (math.cos(a), math.sin(a), 0.0)
+    n = (-math.sin(a), math.cos(a), 0.0)
+    p0 = (0.15, 0.72, 0.3)
+    b.mesh("sliver", [p0, add(p0, scale(d, 1.45)), add(add(p0, scale(d, 1.45)), scale(n, 0.035))],
+           [(0, 1, 2)], dark)
+
+    # Receding stripes, lower right, crossing the right and bottom image borders.
+    u = rotate_y(rotate_z((1.0, 0.0, 0.0), math.radians(25.0)), math.radians(-40.0))
+    v = rotate_y(rotate_z((0.0, 1.0, 0.0), math.radians(25.0)), math.radians(-40.0))
+    origin = (0.5, -1.2, -0.1)
+    s, stripes = 0.0, {"stripes_white": [], "stripes_dark": [], "stripes_green": []}
+    for k in range(16):
+        width = 0.2 * 0.84 ** (15 - k)
+        kind = "stripes_dark" if k % 2 else ("stripes_white", "stripes_green")[(k // 2) % 2]
+        stripes[kind].append(panel(origin, u, v, s, s + width, -0.2, 1.15))
+        s += width
+    for name, mat in (("stripes_white", white), ("stripes_dark", dark),
+                      ("stripes_green", green)):
+        b.mesh(name, *merge(*stripes[name]), mat)
+
+    # Emitter: a 0.3 m square turned 30 degrees about z, in front of the star's lower rim.
+    e_u, e_v = rotate_z((1.0, 0.0, 0.0), math.radians(30.0)), rotate_z((0.0, 1.0, 0.0),
+                                                                       math.radians(30.0))
+    b.mesh("emitter", *panel((-0.3, -0.62, 0.3), e_u, e_v, -0.15, 0.15, -0.15, 0.15), glow)
+
+    # Sphere, lower left, and a purple triangle tilted in depth.
+    b.mesh("sphere", *icosphere(2, 0.3, (-1.08, -0.72, 0.1)), tan)
+    b.mesh("wedge", [(-0.75, -0.95, 0.5), (-0.05, -0.25, -0.3), (-1.15, -0.3, 0.0)],
+           [(0, 1, 2)], purple)
+
+    b.camera((0.1, 0.05, 3.2), (-0.1, -0.05, -3.2), 0.66, aspect_ratio=4.0 / 3.0)
+    return b.build(background=(0.25, 0.3, 0.4))
+
+
+def grading_lights():
+    """Grading scene for stages 2-5 (AO, naive recursion, path tracing with next-event
+    estimation): an open room lit by a constant background (0.2, 0.25, 0.3) and three one-sided
+    emitters of different size, radiance and colour. Metres; y up.
+
+    Room (open at the front z > 1.25, at the right x > 1.25 and at the top, so rays escape to
+    the background, which lights the room through the openings):
+      - floor y = 0, x, z in [-1.25, 1.25], facing up, grey 0.5;
+      - back wall z = -1.25, 2 m tall, facing +z, white 0.8;
+      - left wall x = -1.25, 2 m tall, facing +x, red (0.7, 0.3, 0.3);
+      - green block (0.3, 0.6, 0.3), 0.5 x 0.5 x 0.35 m, turned -18 degrees, near the front left;
+      - grey block 0.5, 0.36 x 0.36 x 1.0 m, turned 25 degrees, at the back right.
+    Emitters (black albedo, one-sided, none touching anything; power = pi x area x radiance):
+      - wall_light: 0.5 m x 0.5 m, radiance (3, 2.6, 2), 1 cm in front of the left wall
+        (y in [0.9, 1.4], z in [-0.6, -0.1]), facing +x into the room: the large dim source
+        (2.1 W in luminance terms), soft shadows; its front is in view;
+      - small_light: 0.12 m x 0.12 m, radiance 50, centred at (-0.5, 0.75, 0), facing down and
+        tilted 40 degrees towards +z (the camera): the small bright source (2.3 W, about as
+        much as wall_light from 1/17 of its area), 0.4 m above and just behind the green
+        block, whose top it lights with a steep falloff and whose shadow it throws forward.
+        The camera sees its front. Light picking by area and by power differ a lot between it
+        and wall_light;
+      - back_light: 0.5 m x 0.3 m, radiance (2, 3, 5), floating 0.4 m in front of the back wall
+        and 0.45 m above the floor, facing -z (towards the back wall). The camera sees its BACK,
+        which must stay black in every stage (no emission from behind), while its front throws
+        a bluish glow on the back wall and the floor behind it, both in view around it. An
+        estimator that ignores one-sidedness (the cosine at the light in NEE, or emission found
+        by a bounce) wrongly lights the floor in front of it, towards the camera.
+    Camera: at the open front right, (1.1, 1.0, 2.7), yfov 0.9, square, looking into the back
+    left corner; the background shows above the back wall, beyond the floor's front edge and
+    past its right edge. No closed form: compare against the reference stages with the same
+    parameters, sampler, seed and spp.
+    """
+    b = GltfBuilder()
+    grey = b.material("grey", (0.5, 0.5, 0.5))
+    white = b.material("white", (0.8, 0.8, 0.8))
+    red = b.material("red", (0.7, 0.3, 0.3))
+    green = b.material("green", (0.3, 0.6, 0.3))
+    wall_light_mat = b.material("wall_light", (0.0, 0.0, 0.0), emission=(3.0, 2.6, 2.0))
+    small_light_mat = b.material("small_light", (0.0, 0.0, 0.0), emission=(50.0, 50.0, 50.0))
+    back_light_mat = b.material("back_light", (0.0, 0.0, 0.0), emission=(2.0, 3.0, 5.0))
+    lo, hi, top = -1.25, 1.25, 2.0
+    b.mesh("floor", *floor_quad(lo, hi, lo, hi), grey)
+    b.mesh("back_wall", *quad((lo, 0.0, lo), (hi, 0.0, lo), (hi, top, lo), (lo, top, lo)), white)
+    b.mesh("left_wall", *quad((lo, 0.0, lo), (lo, top, lo), (lo, top, hi), (lo, 0.0, hi)), red)
+    b.mesh("green_block", *block(-0.55, 0.35, 0.25, 0.25, 0.35, math.radians(-18.0)), green)
+    b.mesh("grey_block", *block(0.7, -0.55, 0.18, 0.18, 1.0, math.radians(25.0)), grey)
+    # wall_light: x = lo + 0.01, facing +x (counter-clockwise seen from +x: z decreasing with y up).
+    x = lo + 0.01
+    b.mesh("wall_light", *quad((x, 0.9, -0.1), (x, 0.9, -0.6), (x, 1.4, -0.6), (x, 1.4, -0.1)),
+           wall_light_mat)
+    # small_light: faces down, tilted 40 degrees towards +z (the camera): normal (0, -c, s).
+    c, s = math.cos(math.radians(40.0)), math.sin(math.radians(40.0))
+    b.mesh("small_light", *panel((-0.5, 0.75, 0.0), (1.0, 0.0, 0.0), (0.0, s, c),
+                                 -0.06, 0.06, -0.06, 0.06), small_light_mat)
+    # back_light: z = -0.85, facing -z (counter-clockwise seen from -z: x decreasing with y up).
+    z = -0.85
+    b.mesh("back_light", *quad((0.3, 0.45, z), (-0.2, 0.45, z), (-0.2, 0.75, z), (0.3, 0.75, z)),
+           back_light_mat)
+    b.camera((1.1, 1.0, 2.7), (-1.5, -0.4, -3.4), 0.9)
+    return b.build(background=(0.2, 0.25, 0.3))
+
+
 def grid(n, bin_uri):
     """Height-field grid for the memory benchmark: n x n cells over [-1, 1]^2 (2 n^2 triangles,
     (n + 1)^2 vertices; n = 708 gives 1,002,528), albedo 0.8, lit by a background of 1.
@@ -650,6 +851,8 @@ SCENES = {
     "small_light.gltf": small_light,
     "light_touching_wall.gltf": light_touching_wall,
     "textured_quad.gltf": textured_quad,
+    "grading_edges.gltf": grading_edges,
+    "grading_lights.gltf": grading_lights,
 }
 
 
@@ -700,8 +903,12 @@ def check_expectations(name, scene):
     """Scene-specific checks on what the camera sees."""
     counts = scene.get("coverage", {})
     seen = set(counts)
+    back_ok = {"grading_lights.gltf": {"back_light"}}.get(name, set())  # seen from behind
     if scene.get("back_hits"):
-        raise GltfError("%s: the camera sees back faces" % name)
+        backs = back_face_parts(scene)
+        if not backs <= back_ok:
+            raise GltfError("%s: the camera sees back faces of %s" % (name, backs - back_ok))
+        print("    %s: back faces seen (intended): %s" % (name, ", ".join(sorted(backs))))
     needs = {  # mesh names the 9x9 camera rays may hit; None = anything
         "furnace_closed.gltf": {"furnace_walls"},
         "open_plane.gltf": {"plane"},
@@ -717,10 +924,46 @@ def check_expectations(name, scene):
     must = {"wall.gltf": {"floor", "wall"}, "corner.gltf": {"floor", "wall_x0", "wall_z0"},
             "white_furnace.gltf": {"sphere", "background"}, "textured_quad.gltf": {"quad"},
             "light_touching_wall.gltf": {"light", "back_wall"},
+            "grading_edges.gltf": {"background", "star_dark", "star_white", "star_red",
+                                   "star_blue", "bars_white", "bars_yellow", "stripes_white",
+                                   "stripes_dark", "stripes_green", "sphere"},
+            "grading_lights.gltf": {"background", "floor", "back_wall", "left_wall",
+                                    "green_block", "grey_block"},
             "cornell_box.gltf": {"left_wall_red", "right_wall_green", "short_block",
                                  "tall_block", "floor", "ceiling", "back_wall"}}.get(name, set())
     if not must <= seen:
         raise GltfError("%s: camera rays miss %s" % (name, must - seen))
+    # Small parts the 9x9 grid may miss: the ray from the eye to the part's centroid must hit
+    # that part first, on the side given (True: front, False: back).
+    centroids = {
+        "grading_edges.gltf": {"emitter": True, "sliver": True, "wedge": True},
+        "grading_lights.gltf": {"small_light": True, "wall_light": True, "back_light": False},
+    }.get(name, {})
+    for part_name, front in sorted(centroids.items()):
+        hit, hit_front = trace_to_part(scene, part_name)
+        if hit != part_name or hit_front != front:
+            raise GltfError("%s: the ray to %s's centroid hits %s (%s face)"
+                            % (name, part_name, hit, "front" if hit_front else "back"))
+
+
+def back_face_parts(scene, n=9):
+    """Names of the parts whose back faces the n x n grid of camera rays hits."""
+    names = set()
+    for j in range(n):
+        for i in range(n):
+            sx, sy = -1.0 + (2 * i + 1.0) / n, 1.0 - (2 * j + 1.0) / n
+            hit, front = trace(scene, *camera_ray(scene["camera"], sx, sy))
+            if front is False:
+                names.add(hit)
+    return names
+
+
+def trace_to_part(scene, part_name):
+    """(name, front) of the first hit along the ray from the camera to a part's centroid."""
+    eye = transform_point(scene["camera"][0], (0.0, 0.0, 0.0))
+    part = next(p for p in scene["parts"] if p["name"] == part_name)
+    target = centroid([p for t in part["triangles"] for p in t])
+    return trace(scene, eye, normalize(sub(target, eye)))
 
 
 # --------------------------------------------------------------------------------------------

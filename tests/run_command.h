@@ -1,4 +1,5 @@
-// Runs a shell command for the end-to-end tests and captures what it prints.
+// Runs a shell command for the end-to-end tests and captures what it prints; reads the files
+// such commands write.
 #pragma once
 
 #include <string>
@@ -11,5 +12,8 @@ struct CommandOutcome {
 };
 
 CommandOutcome runCommand(const std::string& command);
+
+// The whole of a text file ("" when it cannot be read).
+std::string readTextFile(const std::string& path);
 
 }  // namespace pathway::test

@@ -18,6 +18,7 @@
 #include "io/image_io.h"
 #include "render/integrator_registry.h"
 #include "run_command.h"
+#include "viewer/frame_grade.h"
 #include "viewer/loaded_scene.h"
 #include "viewer/panel.h"
 #include "viewer/render_worker.h"
@@ -221,6 +222,31 @@ TEST(ViewerState, PanelValuesAreCheckedAndShareOneDeclaration) {
   ASSERT_EQ(job.lanes.size(), 1u);
   EXPECT_EQ(job.lanes[0].params.size(), info.params.size());
   EXPECT_EQ(job.lanes[0].earlierStages, EarlierStages::Reference);
+}
+
+// Key G: the shown image graded against the reference rendered at the same view.
+TEST_F(ViewerWorker, GradesTheShownImageAgainstTheReference) {
+  if (!registered("stage2@ref")) GTEST_SKIP() << "needs the stage 2 reference";
+  RenderWorker worker;
+  auto finished = [](const LaneFrame& f) { return f.stats.samplesPerPixel == 8; };
+  const uint64_t reference = worker.submit(job("stage2@ref", 64, 48, 8));
+  const auto referenceFrame = waitFor(worker, reference, 0, 20.0, finished);
+  ASSERT_TRUE(referenceFrame);
+  ASSERT_TRUE(canGradeFrame(*referenceFrame));
+  const FrameGrade same = gradeFrame(*referenceFrame, *scene_);
+  EXPECT_TRUE(same.error.empty()) << same.error;
+  EXPECT_TRUE(same.passed) << same.summary;
+  EXPECT_EQ(same.heatmap.width, 64);
+  EXPECT_EQ(same.reference, "stage2@ref");
+
+  WorkerJob skeleton = job("stage2", 64, 48, 8);
+  skeleton.lanes[0].earlierStages = EarlierStages::Reference;
+  const auto skeletonFrame = waitFor(worker, worker.submit(skeleton), 0, 20.0, finished);
+  ASSERT_TRUE(skeletonFrame);
+  const FrameGrade wrong = gradeFrame(*skeletonFrame, *scene_);
+  EXPECT_FALSE(wrong.passed) << wrong.summary;
+  EXPECT_GT(wrong.comparison.failingTiles, 0u);
+  EXPECT_NE(wrong.summary.find("differs from stage2@ref"), std::string::npos) << wrong.summary;
 }
 
 TEST(ViewerScene, MissingFileIsAnError) {

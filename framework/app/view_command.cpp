@@ -54,6 +54,8 @@ Command addViewCommand(CLI::App& app) {
       ->check(CLI::Range(1, 1000000));
   view->add_option("--screenshot", options->screenshot,
                    "After the last frame, write the whole window (panel included) to this PNG");
+  view->add_flag("--grade", options->grade,
+                 "Grade the left pane against the reference once its first image is in (key G)");
   view->add_flag("--benchmark", options->benchmark,
                  "Measure progressive frames per second and time to first image (headless)");
   view->add_option("--benchmark-seconds", options->benchmarkSeconds,

@@ -23,6 +23,11 @@ std::vector<std::string> filterTypeNames();
 // The support radius each profile is written for: box 0.5, tent 1, Mitchell-Netravali 2,
 // Gaussian 1.5 (σ = 0.5, cut at 3σ).
 float naturalFilterRadius(FilterType type);
+// Whether the filter has negative lobes (Mitchell-Netravali): only then can non-negative radiance
+// make a negative pixel.
+inline bool hasNegativeLobes(FilterType type) {
+  return type == FilterType::MitchellNetravali;
+}
 
 // The 1D profiles, centred on 0, on their natural support (stage 1 writes them).
 struct FilterProfiles {

@@ -84,6 +84,27 @@ void writeExr(const std::string& path, const FilmImages& images, const ImageMeta
   writeAtomically(path, spec, OIIO::TypeDesc::FLOAT, data.data());
 }
 
+void writeExrLayers(const std::string& path, const std::map<std::string, const Image*>& layers,
+                    const ImageMetadata& metadata) {
+  const Image& first = *layers.begin()->second;
+  OIIO::ImageSpec spec(first.width, first.height, static_cast<int>(3 * layers.size()),
+                       OIIO::TypeDesc::FLOAT);
+  spec.channelnames.clear();
+  for (const auto& [name, image] : layers) {
+    if (image->width != first.width || image->height != first.height)
+      throw PathwayError(path + ": internal: layer '" + name + "' has another size");
+    for (const char* c : {"R", "G", "B"})
+      spec.channelnames.push_back(name.empty() ? std::string(c) : name + "." + c);
+  }
+  for (const auto& [key, value] : metadata) spec.attribute(key, value);
+  std::vector<float> data;
+  data.reserve(first.pixels.size() * spec.nchannels);
+  for (size_t i = 0; i < first.pixels.size(); ++i)
+    for (const auto& entry : layers)
+      for (int c = 0; c < 3; ++c) data.push_back(entry.second->pixels[i][c]);
+  writeAtomically(path, spec, OIIO::TypeDesc::FLOAT, data.data());
+}
+
 void writePng(const std::string& path, const Image& image, float exposure) {
   const float scale = std::exp2(exposure);
   std::vector<unsigned char> data;
@@ -127,6 +148,18 @@ LoadedImage readImageFile(const std::string& path) {
   extract(loaded.images.color, 0, isColor ? 3 : 1);
   if (channel("variance.R") >= 0) extract(loaded.images.variance, channel("variance.R"), 3);
   if (channel("weight") >= 0) extract(loaded.images.weight, channel("weight"), 1);
+  for (int c = 0; c < spec.nchannels; ++c) {
+    const std::string& name = spec.channelnames[c];
+    const size_t dot = name.rfind('.');
+    if (dot == std::string::npos || name.substr(dot) != ".R") continue;
+    const std::string layer = name.substr(0, dot);
+    if (layer == "variance" || channel(layer + ".G") < 0 || channel(layer + ".B") < 0) continue;
+    const int index[3] = {c, channel(layer + ".G"), channel(layer + ".B")};
+    Image& image = loaded.layers[layer];
+    image = Image(spec.width, spec.height);
+    for (size_t i = 0; i < image.pixels.size(); ++i)
+      for (int k = 0; k < 3; ++k) image.pixels[i][k] = data[i * spec.nchannels + index[k]];
+  }
   for (const OIIO::ParamValue& param : spec.extra_attribs) {
     const std::string name = param.name().string();
     if (name.rfind("pathway:", 0) == 0) loaded.metadata[name] = param.get_string();

@@ -22,6 +22,9 @@ struct FilmImages {
 };
 
 void writeExr(const std::string& path, const FilmImages& images, const ImageMetadata& metadata);
+// An EXR of RGB layers of one size: the layer named "" is R, G, B; a layer "x" is x.R, x.G, x.B.
+void writeExrLayers(const std::string& path, const std::map<std::string, const Image*>& layers,
+                    const ImageMetadata& metadata);
 // `exposure` in stops: pixel values are scaled by 2^exposure before the sRGB curve.
 void writePng(const std::string& path, const Image& image, float exposure);
 // Picks the format from the extension (.exr or .png); throws PathwayError for anything else.
@@ -34,6 +37,7 @@ void checkImagePath(const std::string& path);
 
 struct LoadedImage {
   FilmImages images;  // variance and weight are empty when the file has no such channels
+  std::map<std::string, Image> layers;  // every other x.R, x.G, x.B triple, by x
   std::map<std::string, std::string> metadata;
 };
 LoadedImage readImageFile(const std::string& path);

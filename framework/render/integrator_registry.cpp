@@ -14,6 +14,11 @@ std::map<std::string, IntegratorInfo>& registry() {
   return integrators;
 }
 
+std::vector<std::string>& log() {
+  static std::vector<std::string> names;
+  return names;
+}
+
 }  // namespace
 
 std::string stageIntegratorName(int stage, Variant variant) {
@@ -24,7 +29,12 @@ std::string stageIntegratorName(int stage, Variant variant) {
 bool registerIntegrator(IntegratorInfo info) {
   const std::string name = info.name;
   registry()[name] = std::move(info);
+  log().push_back(name);
   return true;
+}
+
+const std::vector<std::string>& registrationLog() {
+  return log();
 }
 
 bool registerStageIntegrator(int stage, Variant variant, IntegratorFactory factory) {

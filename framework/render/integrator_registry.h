@@ -48,6 +48,10 @@ bool registerIntegrator(IntegratorInfo info);
 // (render/stage_catalog.h), running the stage's own checks before `factory`.
 bool registerStageIntegrator(int stage, Variant variant, IntegratorFactory factory);
 
+// Every registration so far, in order. A name appears twice when a stage library
+// (render/stage_library.h) replaced a built-in stage.
+const std::vector<std::string>& registrationLog();
+
 // Throws PathwayError listing the known names when `name` is unknown.
 const IntegratorInfo& findIntegrator(const std::string& name);
 // Stage `stage` of `variant`, or nullptr when it is not built in.

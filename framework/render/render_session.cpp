@@ -1,5 +1,7 @@
 #include "render/render_session.h"
 
+#include <cstdio>
+
 #include "core/error.h"
 
 namespace pathway {
@@ -19,14 +21,20 @@ RenderRecipe completed(const IntegratorInfo& info, RenderRecipe recipe) {
   return recipe;
 }
 
-ImageMetadata renderMetadata(const std::string& scenePath, const RenderRecipe& recipe,
-                             const RenderStats& stats, size_t unresolvedPixels, size_t todoCount) {
+ImageMetadata renderMetadata(const std::string& scenePath, const std::string& sceneHash, int stage,
+                             const RenderRecipe& recipe, const RenderStats& stats,
+                             size_t unresolvedPixels, const std::vector<TodoRecord>& todos) {
+  std::string todoSites;
+  for (const TodoRecord& todo : todos)
+    todoSites += (todoSites.empty() ? "" : "; ") + todo.file + ":" + std::to_string(todo.line);
   const RenderSettings& s = recipe.settings;
   const RayCounters& c = stats.counters;
   const double seconds = stats.seconds;
   return {
       {"pathway:scene", scenePath},
+      {"pathway:sceneHash", sceneHash},
       {"pathway:integrator", recipe.integrator},
+      {"pathway:stage", std::to_string(stage)},
       {"pathway:params", recipe.params.describe()},
       {"pathway:earlierStages", earlierStagesName(recipe.earlierStages)},
       {"pathway:spp", std::to_string(stats.samplesPerPixel)},
@@ -42,7 +50,8 @@ ImageMetadata renderMetadata(const std::string& scenePath, const RenderRecipe& r
       {"pathway:unresolvedPixels", std::to_string(unresolvedPixels)},
       {"pathway:seconds", std::to_string(seconds)},
       {"pathway:raysPerSecond", std::to_string(seconds > 0 ? c.totalRays() / seconds : 0.0)},
-      {"pathway:todos", std::to_string(todoCount)},
+      {"pathway:todos", std::to_string(todos.size())},
+      {"pathway:todoSites", todoSites},
   };
 }
 
@@ -55,6 +64,9 @@ RenderSession::RenderSession(const RayTracer& tracer, const Camera& camera,
       recipe_(completed(info_, recipe)),
       kit_(info_.kit(recipe.earlierStages)),
       camera_(camera) {
+  char hash[17];
+  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(tracer.sceneHash()));
+  sceneHash_ = hash;
   recipe_.settings.check();
   integratorObject_ = info_.create({recipe_.params, kit_, tracer.scene()});
   renderer_ = std::make_unique<Renderer>(tracer, camera_, *integratorObject_, kit_.stage1(),
@@ -71,8 +83,8 @@ RenderResult RenderSession::develop(std::vector<TodoRecord> todos) const {
   result.images.weight = film.weights();
   result.stats = renderer_->stats();
   result.todos = std::move(todos);
-  result.metadata = renderMetadata(tracer_.scene().sourcePath, recipe_, result.stats,
-                                   result.unresolvedPixels, result.todos.size());
+  result.metadata = renderMetadata(tracer_.scene().sourcePath, sceneHash_, info_.stage, recipe_,
+                                   result.stats, result.unresolvedPixels, result.todos);
   return result;
 }
 

@@ -61,6 +61,7 @@ class RenderSession {
   StageKit kit_;
   std::unique_ptr<Integrator> integratorObject_;
   Camera camera_;
+  std::string sceneHash_;  // of the scene's content, for the metadata
   std::unique_ptr<Renderer> renderer_;
 };
 

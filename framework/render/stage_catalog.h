@@ -18,6 +18,7 @@ constexpr int kStageCount = 5;
 struct StageDeclaration {
   int number = 0;
   std::string name;  // "stage3"; the reference registers as "stage3@ref"
+  std::string file;  // the stage's file, the same name in assignments/stageN and solutions/stageN
   std::string summary;
   std::vector<ParamSpec> params;
   SamplerType defaultSampler = SamplerType::Independent;

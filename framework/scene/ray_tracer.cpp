@@ -65,7 +65,7 @@ RTCRay toEmbree(const Ray& ray) {
 
 }  // namespace
 
-RayTracer::RayTracer(const Scene& scene) : scene_(scene) {
+RayTracer::RayTracer(const Scene& scene) : scene_(scene), sceneHash_(scene.contentHash()) {
   device_ = sharedDevice();
   const long long bytesBefore = deviceState.bytes.load();
   rtcScene_ = rtcNewScene(device_);

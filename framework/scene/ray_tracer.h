@@ -37,6 +37,8 @@ class RayTracer {
   void setRayLog(std::vector<LoggedRay>* log) { log_ = log; }
 
   const Scene& scene() const { return scene_; }
+  // Scene::contentHash() as it was when the BVH was built (computed once: it reads every vertex).
+  uint64_t sceneHash() const { return sceneHash_; }
   size_t bvhBytes() const { return bvhBytes_; }  // memory Embree allocated for the BVH
 
  private:
@@ -44,6 +46,7 @@ class RayTracer {
   RTCDevice device_ = nullptr;
   RTCScene rtcScene_ = nullptr;
   size_t bvhBytes_ = 0;
+  uint64_t sceneHash_ = 0;
   std::vector<LoggedRay>* log_ = nullptr;
 };
 

@@ -23,6 +23,52 @@ Color Texture::lookup(Vec2 uv) const {
          ty * ((1 - tx) * texel(ix, iy + 1) + tx * texel(ix + 1, iy + 1));
 }
 
+namespace {
+
+// FNV-1a over raw bytes: small, and stable across runs and machines of one endianness.
+class ByteHash {
+ public:
+  template <typename T>
+  void add(const T* data, size_t count) {
+    const auto* bytes = reinterpret_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < count * sizeof(T); ++i) value_ = (value_ ^ bytes[i]) * 0x100000001b3ull;
+  }
+  template <typename T>
+  void add(const T& value) {
+    add(&value, 1);
+  }
+  uint64_t value() const { return value_; }
+
+ private:
+  uint64_t value_ = 0xcbf29ce484222325ull;
+};
+
+}  // namespace
+
+uint64_t Scene::contentHash() const {
+  ByteHash hash;
+  for (const Mesh& mesh : meshes) {
+    hash.add(mesh.positions.data(), mesh.positions.size());
+    hash.add(mesh.triangles.data(), mesh.triangles.size());
+    hash.add(mesh.texcoords.data(), mesh.texcoords.size());
+    hash.add(mesh.material);
+  }
+  for (const Material& material : materials) {
+    hash.add(material.baseColor);
+    hash.add(material.baseColorTexture);
+    hash.add(material.emission);
+    hash.add(material.doubleSided);
+  }
+  for (const Texture& texture : textures) hash.add(texture.texels.data(), texture.texels.size());
+  if (camera) {
+    hash.add(camera->cameraToWorld);
+    hash.add(camera->yfov);
+    hash.add(camera->aspectRatio.value_or(0.0f));
+  }
+  hash.add(background);
+  return hash.value();
+}
+
 size_t Scene::triangleCount() const {
   size_t count = 0;
   for (const Mesh& mesh : meshes) count += mesh.triangleCount();

@@ -76,6 +76,10 @@ struct Scene {
   std::vector<std::string> warnings;  // one per unsupported feature, already printed
 
   size_t triangleCount() const;
+  // A hash of everything that changes an image (geometry, materials, textures, camera,
+  // background), not of the file's formatting: renders record it so that images made from
+  // different scenes are never compared or merged.
+  uint64_t contentHash() const;
 };
 
 }  // namespace pathway

@@ -63,6 +63,16 @@ void falseColor(float t, uint8_t rgb[3]) {
     rgb[c] = static_cast<uint8_t>(stops[i][c] + f * (stops[i + 1][c] - stops[i][c]) + 0.5f);
 }
 
+DisplayImage displayImageOf(const Image& image) {
+  DisplayImage out;
+  out.width = image.width;
+  out.height = image.height;
+  out.rgba.assign(4 * image.pixels.size(), 255);
+  for (size_t i = 0; i < image.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c) out.rgba[4 * i + c] = encode(image.pixels[i][c]);
+  return out;
+}
+
 DisplayImage makeDisplayImage(const LaneFrame& frame, DisplayMode mode, float exposure) {
   DisplayImage out;
   const Image& color = frame.images.color;

@@ -22,6 +22,9 @@ struct DisplayImage {
 // `exposure` in stops, for the colour mode.
 DisplayImage makeDisplayImage(const LaneFrame& frame, DisplayMode mode, float exposure);
 
+// Any linear RGB image (e.g. the grader's heatmap), sRGB-encoded, opaque.
+DisplayImage displayImageOf(const Image& image);
+
 // The false-colour scale (viridis) at t in [0, 1], as 8-bit RGB.
 void falseColor(float t, uint8_t rgb[3]);
 

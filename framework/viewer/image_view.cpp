@@ -15,6 +15,7 @@ const ImU32 kTextColor = IM_COL32(235, 235, 235, 255);
 const ImU32 kBoxColor = IM_COL32(0, 0, 0, 170);
 const ImU32 kTodoBox = IM_COL32(150, 75, 0, 230);
 const ImU32 kErrorBox = IM_COL32(150, 20, 20, 235);
+const ImU32 kGradePass = IM_COL32(20, 110, 40, 230);
 
 // Lines of text on a translucent box, wrapped at `maxWidth`; `anchor` is the box's top-left, or
 // its bottom-left when `growUp`. Returns the box's height.
@@ -105,6 +106,9 @@ void drawPaneContent(ImDrawList* draw, const Pane& pane, const GlTexture& textur
     const ImVec2 min(pane.min.x + 0.5f * (pane.width() - size.x),
                      pane.min.y + 0.5f * (pane.height() - size.y));
     draw->AddImage(texture.imguiId(), min, ImVec2(min.x + size.x, min.y + size.y));
+    if (info.gradeOverlay)  // translucent, so the image shows through where nothing differs
+      draw->AddImage(info.gradeOverlay->imguiId(), min, ImVec2(min.x + size.x, min.y + size.y),
+                     ImVec2(0, 0), ImVec2(1, 1), IM_COL32(255, 255, 255, 150));
   }
   const float margin = 8.0f, width = pane.width() - 2 * margin;
   const ImVec2 corner(pane.min.x + margin, pane.min.y + margin);
@@ -120,7 +124,12 @@ void drawPaneContent(ImDrawList* draw, const Pane& pane, const GlTexture& textur
             kErrorBox, width);
     return;
   }
-  textBox(draw, ImVec2(corner.x, y), counters(*frame, info.side != nullptr), kBoxColor, width);
+  y +=
+      textBox(draw, ImVec2(corner.x, y), counters(*frame, info.side != nullptr), kBoxColor, width) +
+      4;
+  if (!info.gradeLines.empty())
+    textBox(draw, ImVec2(corner.x, y), info.gradeLines, info.gradePassed ? kGradePass : kErrorBox,
+            width);
 
   // Unfinished stage code: impossible to miss, with the file and line to open.
   std::vector<std::string> todos;

@@ -37,6 +37,10 @@ struct PaneInfo {
   DisplayMode mode = DisplayMode::Color;
   float scaleMax = 0.0f;
   const char* side = nullptr;  // "left" / "right" in the split view
+  // The grader's signed-z heatmap over the image, and its verdict (empty: none shown).
+  const GlTexture* gradeOverlay = nullptr;
+  std::vector<std::string> gradeLines;
+  bool gradePassed = false;
 };
 
 void drawPane(const Pane& pane, const GlTexture& texture, const PaneInfo& info);

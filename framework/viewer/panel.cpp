@@ -271,6 +271,11 @@ PanelAction drawPanel(ViewerState& state, PanelText& text, const PanelStatus& st
   }
 
   if (ImGui::CollapsingHeader("Integrator", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (ImGui::Button("Grade against the reference (G)")) action = PanelAction::Grade;
+    tooltip(
+        "Renders the reference of the shown stage at the same view and settings and compares "
+        "the left pane with it, tile by tile; the pane then shows where they differ (red: "
+        "yours is brighter, blue: darker, yellow outline: significant).");
     if (state.split && ImGui::BeginTabBar("panes")) {
       if (ImGui::BeginTabItem("left pane")) {
         integratorWidgets(state, 0);

@@ -32,7 +32,7 @@ struct PanelStatus {
   bool fixedSize = false;
 };
 
-enum class PanelAction { None, OpenScene, SaveExr, SavePng, Screenshot, ResetCamera };
+enum class PanelAction { None, OpenScene, SaveExr, SavePng, Screenshot, ResetCamera, Grade };
 
 constexpr float kPanelWidth = 380.0f;
 

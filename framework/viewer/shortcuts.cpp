@@ -23,6 +23,7 @@ const Shortcut kShortcuts[] = {
     {"T", "toggle yours / reference (Shift+T: right pane)"},
     {"1 ... 5", "stage 1 ... 5 (Shift: right pane)"},
     {"D", "display: colour, variance, rays per sample"},
+    {"G", "grade the image against the reference; shows where it differs (again: hide)"},
     {"+ / -", "exposure up / down one stop"},
     {"V", "split view on / off"},
     {"B", "split view: equal time / equal ray count"},
@@ -60,6 +61,7 @@ ShortcutEffects handleShortcuts(ViewerState& state) {
     state.balance = state.balance == Balance::EqualTime ? Balance::EqualRays : Balance::EqualTime;
   if (pressed(GLFW_KEY_SPACE)) state.paused = !state.paused;
   if (pressed(GLFW_KEY_F12)) effects.screenshot = true;
+  if (pressed(GLFW_KEY_G)) effects.grade = true;
   return effects;
 }
 

@@ -8,6 +8,7 @@ namespace pathway {
 struct ShortcutEffects {
   bool resetCamera = false;
   bool screenshot = false;
+  bool grade = false;  // grade the left pane's image against the reference (again: hide it)
 };
 
 // Applies the keys pressed this frame (unless a text field has the keyboard).

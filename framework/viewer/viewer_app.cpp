@@ -44,6 +44,7 @@ Viewer::Viewer(std::unique_ptr<Platform> platform, ViewerState state,
     throw;
   }
   for (auto& texture : textures_) texture = std::make_unique<GlTexture>(platform_->gl());
+  gradeTexture_ = std::make_unique<GlTexture>(platform_->gl());
   if (scene_) {
     camera_ = OrbitCamera(scene_->scene);
     text_.sceneInput = scene_->scene.sourcePath;
@@ -55,7 +56,9 @@ Viewer::Viewer(std::unique_ptr<Platform> platform, ViewerState state,
 
 Viewer::~Viewer() {
   worker_.reset();  // no more wake-ups, no more frames
+  if (grading_.valid()) grading_.wait();
   for (auto& texture : textures_) texture.reset();
+  gradeTexture_.reset();
   platform_->shutdownImGui();
   ImGui::DestroyContext();
 }
@@ -112,6 +115,36 @@ void Viewer::updateTextures() {
   }
 }
 
+void Viewer::toggleGrade() {
+  if (grading_.valid()) return;                                      // one at a time
+  const std::shared_ptr<const LaneFrame> frame = worker_->frame(0);  // the newest image
+  if (grade_ && frame && grade_->job == frame->job && grade_->spp == frame->stats.samplesPerPixel) {
+    grade_.reset();  // G again on the same image: hide
+    return;
+  }  // otherwise grade the newest image (the render may have refined since)
+  grade_.reset();
+  if (!frame || !scene_) return;
+  if (!canGradeFrame(*frame)) {
+    FrameGrade unavailable;
+    unavailable.job = frame->job;
+    unavailable.error =
+        "cannot grade " + frame->integrator +
+        (frame->error.empty() ? ": its reference is not built in (in a handout, use pathway grade)"
+                              : ": it did not render");
+    grade_ = unavailable;
+    return;
+  }
+  std::shared_ptr<const LoadedScene> scene = scene_;
+  grading_ = std::async(std::launch::async, [frame, scene] { return gradeFrame(*frame, *scene); });
+}
+
+void Viewer::pollGrade() {
+  if (!grading_.valid() || grading_.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+    return;
+  grade_ = grading_.get();
+  if (!grade_->heatmap.pixels.empty()) gradeTexture_->upload(displayImageOf(grade_->heatmap));
+}
+
 void Viewer::saveImages(const std::string& extension) {
   text_.saveFailed = false;
   text_.saveMessage.clear();
@@ -147,6 +180,8 @@ void Viewer::frame(const std::string& screenshotPath) {
 
   const ShortcutEffects keys = handleShortcuts(state_);
   if (keys.resetCamera) camera_.reset();
+  if (keys.grade) toggleGrade();
+  pollGrade();
   if (keys.screenshot) pendingScreenshot_ = text_.savePrefix + "_screenshot.png";
 
   updateTextures();  // before the panel, so panel and panes show the same image
@@ -183,6 +218,9 @@ void Viewer::frame(const std::string& screenshotPath) {
     case PanelAction::ResetCamera:
       camera_.reset();
       break;
+    case PanelAction::Grade:
+      toggleGrade();
+      break;
     case PanelAction::None:
       break;
   }
@@ -197,6 +235,19 @@ void Viewer::frame(const std::string& screenshotPath) {
     info.mode = state_.display;
     info.scaleMax = scaleMax_[lane];
     if (layout.count == 2) info.side = lane == 0 ? "left" : "right";
+    if (lane == 0 && grading_.valid()) info.gradeLines = {"grading against the reference..."};
+    if (lane == 0 && grade_ && shown_[0] && grade_->job == shown_[0]->job) {
+      if (!grade_->error.empty()) {
+        info.gradeLines = {grade_->error};
+      } else {
+        const bool refined = grade_->spp != shown_[0]->stats.samplesPerPixel;
+        info.gradeLines = {grade_->summary, refined
+                                                ? "(the image has refined since: G grades it again)"
+                                                : "(G hides this)"};
+        info.gradePassed = grade_->passed;
+        if (!grade_->heatmap.pixels.empty()) info.gradeOverlay = gradeTexture_.get();
+      }
+    }
     drawPane(layout.panes[lane], *textures_[lane], info);
   }
   drawHelp(state_);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "render/render_choices.h"
+#include "viewer/frame_grade.h"
 #include "viewer/gl_display.h"
 #include "viewer/image_view.h"
 #include "viewer/panel.h"
@@ -34,6 +35,7 @@ struct ViewerOptions {
   bool headless = false;
   int frames = 0;          // > 0: draw this many frames, then exit
   std::string screenshot;  // written after the last frame
+  bool grade = false;      // headless: grade the left pane once its first image is in (key G)
   bool benchmark = false;
   double benchmarkSeconds = 3.0;
 };
@@ -56,6 +58,10 @@ class Viewer {
   // Every pane shows an image (or an error) of the job now submitted.
   bool panesCurrent() const;
   const RenderWorker& worker() const { return *worker_; }
+  // Grades the left pane's image against the reference (G); again while shown: hides it.
+  void toggleGrade();
+  // True while a grade is being made.
+  bool grading() const { return grading_.valid(); }
   uint64_t imagesShown() const { return imagesShown_; }
 
  private:
@@ -63,6 +69,7 @@ class Viewer {
   void submitIfChanged(const ImageLayout& layout);
   void updateTextures();
   void saveImages(const std::string& extension);
+  void pollGrade();
   void noteInput();
 
   std::unique_ptr<Platform> platform_;
@@ -73,6 +80,9 @@ class Viewer {
   OrbitCamera camera_;
   CameraMouse mouse_;
   std::unique_ptr<GlTexture> textures_[2];
+  std::unique_ptr<GlTexture> gradeTexture_;
+  std::future<FrameGrade> grading_;
+  std::optional<FrameGrade> grade_;  // shown while its frame's job is the left pane's
   std::shared_ptr<const LaneFrame> shown_[2];
   DisplayMode shownMode_[2] = {DisplayMode::Color, DisplayMode::Color};
   float shownExposure_[2] = {0.0f, 0.0f};

@@ -100,10 +100,16 @@ int runViewer(const ViewerOptions& options) {
   // this long) until every pane has its first image.
   constexpr double kFirstImageTimeout = 30.0;
   double deadline = 0.0;
+  bool gradeAsked = false;
   for (int drawn = 0; !viewer.shouldClose(); ++drawn) {
+    if (options.grade && !gradeAsked && viewer.panesCurrent()) {
+      viewer.toggleGrade();
+      gradeAsked = true;
+    }
     const bool enough = frames > 0 && drawn + 1 >= frames;
     if (enough && deadline == 0.0) deadline = now() + kFirstImageTimeout;
-    const bool last = enough && (viewer.panesCurrent() || now() > deadline);
+    const bool gradeShown = !options.grade || (gradeAsked && !viewer.grading());
+    const bool last = enough && ((viewer.panesCurrent() && gradeShown) || now() > deadline);
     viewer.frame(last ? screenshot : "");
     if (last) break;
     viewer.waitForChange();

@@ -1,0 +1,194 @@
+#include "grade/class_grading.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "core/error.h"
+#include "grade/submission.h"
+#include "render/stage_catalog.h"
+
+namespace pathway {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Every case of the run failed for one reason (the submission did not build, a file is missing).
+// The submission's name: its folder's, also for "alice/" and "./alice".
+std::string submissionName(const std::string& folder) {
+  fs::path path = fs::absolute(folder).lexically_normal();
+  if (path.filename().empty()) path = path.parent_path();
+  return path.filename().string();
+}
+
+void failCases(GradeSummary& summary, const std::vector<const GradingCase*>& cases,
+               const std::string& problem) {
+  std::map<int, int> perStage, done;
+  for (const GradingCase* c : cases) ++perStage[c->stage];
+  for (const GradingCase* c : cases) {
+    CaseResult result;
+    result.id = c->id();
+    result.title = "Stage " + std::to_string(c->stage) + " · " + c->name;
+    result.purpose = c->purpose;
+    result.stage = c->stage;
+    result.problem = problem;
+    result.maxPoints = casePoints(done[c->stage]++, perStage[c->stage]);
+    summary.cases.push_back(std::move(result));
+  }
+}
+
+}  // namespace
+
+SubmissionResult gradeSubmission(const std::string& folder, const std::string& output,
+                                 const GradingRun& gradingRun, double buildTimeLimit,
+                                 const ComparisonSettings& settings) {
+  SubmissionResult row;
+  row.name = submissionName(folder);
+  const fs::path out(output);
+  GradeSummary summary;
+  summary.title = "Pathway grading: " + row.name;
+  try {
+    fs::create_directories(out);
+    const Submission submission = findSubmission(folder);
+    for (const std::string& file : submission.missing) summary.notes.push_back("missing: " + file);
+    for (const std::string& file : submission.duplicates)
+      summary.notes.push_back("a second copy, not used: " + file);
+    for (const std::string& file : submission.ignored)
+      summary.notes.push_back("not part of any stage, not compiled: " + file);
+
+    // Each stage file builds on its own: one that does not compile costs its own stage only.
+    const SubmissionBuild build =
+        buildSubmission(submission, (out / "build").string(), buildTimeLimit);
+    row.buildSeconds = build.seconds;
+    GradingRun run = gradingRun;
+    run.cases.clear();
+    std::vector<const GradingCase*> missing;
+    std::map<int, std::vector<const GradingCase*>> broken;
+    for (const GradingCase* c : gradingRun.cases) {
+      const auto built = build.stages.find(c->stage);
+      if (built == build.stages.end())
+        missing.push_back(c);
+      else if (!built->second.succeeded)
+        broken[c->stage].push_back(c);
+      else
+        run.cases.push_back(c);
+    }
+    for (const auto& [stage, result] : build.stages)
+      if (result.succeeded) run.stageLibraries.push_back(result.library);
+    const std::vector<std::string> notes = summary.notes;
+    if (!run.cases.empty()) {
+      summary = gradeStages(run, settings);
+      summary.title += " (" + row.name + ")";
+    }
+    summary.notes = notes;
+    row.gradeSeconds = summary.seconds;
+    row.status = "graded";
+    for (const CaseResult& c : summary.cases) {
+      if (c.crashed) row.status = "graded; a stage crashed";
+      if (c.timedOut) row.status = "graded; a stage ran past its time limit";
+    }
+    for (const auto& [stage, cases] : broken) {
+      const StageBuild& failed = build.stages.at(stage);
+      failCases(summary, cases, failed.problem + ":\n" + failed.log);
+      row.status = "graded; a stage file did not compile";
+    }
+    if (!missing.empty()) {
+      failCases(summary, missing, "the stage's file is missing from the submission");
+      if (row.status == "graded") row.status = "graded; files missing";
+    }
+  } catch (const std::exception& error) {
+    // Never stops the others: the submission gets the reason, and no points.
+    row.status = std::string("could not be graded: ") + error.what();
+    summary.notes.push_back(row.status);
+    failCases(summary, gradingRun.cases, row.status);
+  }
+  std::stable_sort(summary.cases.begin(), summary.cases.end(),
+                   [](const CaseResult& a, const CaseResult& b) { return a.stage < b.stage; });
+  writeGradescopeResults((out / "results.json").string(), summary, settings);
+  writeHtmlReport((out / "report").string(), summary, settings);
+  row.points = summary.points();
+  row.maxPoints = summary.maxPoints();
+  row.stagePoints.assign(kStageCount, 0.0);
+  for (const CaseResult& c : summary.cases) row.stagePoints[c.stage - 1] += c.points;
+  return row;
+}
+
+namespace {
+
+// A CSV field: quoted, quotes doubled (names like "Last, First" are common).
+std::string csvField(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+void writeClassTable(const ClassGrading& grading, const std::vector<SubmissionResult>& rows) {
+  std::ofstream csv(fs::path(grading.output) / "class.csv");
+  csv << "submission,points,max";
+  for (int stage = 1; stage <= kStageCount; ++stage) csv << ",stage" << stage;
+  csv << ",build_seconds,grade_seconds,status\n";
+  std::ofstream html(fs::path(grading.output) / "index.html");
+  html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Pathway: class "
+          "grades</title>\n<style>body{font-family:sans-serif;margin:2em}"
+          "td,th{padding:2px 10px;text-align:right}td:first-child,th:first-child,td:last-child"
+          "{text-align:left}</style></head><body>\n<h1>Class grades</h1>\n<table><tr><th>"
+          "submission</th><th>points</th>";
+  for (int stage = 1; stage <= kStageCount; ++stage) html << "<th>stage " << stage << "</th>";
+  html << "<th>build s</th><th>grade s</th><th>status</th></tr>\n";
+  for (const SubmissionResult& r : rows) {
+    char numbers[64];
+    std::snprintf(numbers, sizeof numbers, "%.1f,%.1f", r.points, r.maxPoints);
+    csv << csvField(r.name) << "," << numbers;
+    const std::string name = escapeHtml(r.name);
+    std::snprintf(numbers, sizeof numbers, "%.1f / %.1f", r.points, r.maxPoints);
+    html << "<tr><td><a href=\"./" << name << "/report/index.html\">" << name << "</a></td><td>"
+         << numbers << "</td>";
+    for (double points : r.stagePoints) {
+      std::snprintf(numbers, sizeof numbers, "%.1f", points);
+      csv << "," << numbers;
+      html << "<td>" << numbers << "</td>";
+    }
+    std::snprintf(numbers, sizeof numbers, "%.1f,%.1f", r.buildSeconds, r.gradeSeconds);
+    csv << "," << numbers << "," << csvField(r.status) << "\n";
+    std::snprintf(numbers, sizeof numbers, "<td>%.1f</td><td>%.1f</td>", r.buildSeconds,
+                  r.gradeSeconds);
+    html << numbers << "<td>" << escapeHtml(r.status) << "</td></tr>\n";
+  }
+  html << "</table></body></html>\n";
+}
+
+}  // namespace
+
+std::vector<SubmissionResult> gradeClass(const ClassGrading& grading,
+                                         const ComparisonSettings& settings) {
+  if (!fs::is_directory(grading.submissions))
+    throw PathwayError(grading.submissions + ": not a folder of submissions");
+  std::vector<std::string> folders;
+  for (const auto& entry : fs::directory_iterator(grading.submissions))
+    if (entry.is_directory()) folders.push_back(entry.path().string());
+  std::sort(folders.begin(), folders.end());
+  if (folders.empty()) throw PathwayError(grading.submissions + ": holds no submission folders");
+  fs::create_directories(grading.output);
+  std::vector<SubmissionResult> rows;
+  for (const std::string& folder : folders) {
+    if (grading.run.progress)
+      std::fprintf(stderr, "== %s\n", fs::path(folder).filename().string().c_str());
+    const std::string name = submissionName(folder);
+    try {
+      rows.push_back(gradeSubmission(folder, (fs::path(grading.output) / name).string(),
+                                     grading.run, grading.buildTimeLimit, settings));
+    } catch (const std::exception& error) {  // e.g. its results could not be written
+      SubmissionResult row;
+      row.name = name;
+      row.stagePoints.assign(kStageCount, 0.0);
+      row.status = std::string("could not be graded: ") + error.what();
+      rows.push_back(row);
+    }
+    writeClassTable(grading, rows);  // the table so far, in case the run is stopped
+  }
+  return rows;
+}
+
+}  // namespace pathway

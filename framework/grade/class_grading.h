@@ -1,0 +1,39 @@
+// A class graded on one machine: every submission in a folder is built on its own (a stage
+// library in its own build folder) and graded like one student's; a submission that does not
+// build, crashes, hangs or lacks files gets that in its results and never stops the others.
+// Writes <output>/<submission>/report/ and results.json, and the class table
+// <output>/index.html and <output>/class.csv.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "grade/stage_grading.h"
+
+namespace pathway {
+
+struct ClassGrading {
+  std::string submissions;  // a folder of submission folders
+  std::string output;
+  GradingRun run;  // cases, references, time limit; the stage library is set per submission
+  double buildTimeLimit = 300.0;
+};
+
+struct SubmissionResult {
+  std::string name;
+  double points = 0.0, maxPoints = 0.0;
+  std::vector<double> stagePoints;  // index 0 is stage 1
+  double buildSeconds = 0.0, gradeSeconds = 0.0;
+  std::string status;  // "graded", "did not compile", ...
+};
+
+std::vector<SubmissionResult> gradeClass(const ClassGrading& grading,
+                                         const ComparisonSettings& settings);
+
+// One submission: builds `folder` in `output`/build and writes `output`/report/ and
+// `output`/results.json (Gradescope's autograder runs this for each student).
+SubmissionResult gradeSubmission(const std::string& folder, const std::string& output,
+                                 const GradingRun& run, double buildTimeLimit,
+                                 const ComparisonSettings& settings);
+
+}  // namespace pathway

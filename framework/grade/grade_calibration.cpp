@@ -1,0 +1,55 @@
+#include "grade/grade_calibration.h"
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+
+#include "grade/grading_reference.h"
+#include "grade/stage_grading.h"
+#include "scene/gltf_loader.h"
+
+namespace pathway {
+
+CalibrationResult calibrate(const GradingCase& gradingCase, uint32_t spp, Variant variant,
+                            int seeds, uint64_t firstSeed, const std::string& referencesFolder,
+                            const std::string& scenesFolder, const ComparisonSettings& settings,
+                            const std::function<void(int)>& onSeed) {
+  GradingCase atSpp = gradingCase;
+  atSpp.spp = spp;
+  const Scene scene = loadScene(scenesFolder + "/" + gradingCase.scene);
+  const RayTracer tracer(scene);
+  const GradingReference reference =
+      spp == gradingCase.spp
+          ? readGradingReference(referencesFolder + "/" + gradingCase.referenceFile())
+          : makeGradingReference(atSpp, tracer);
+
+  CalibrationResult result;
+  result.caseId = gradingCase.id();
+  result.spp = spp;
+  result.seeds = seeds;
+  const auto start = std::chrono::steady_clock::now();
+  auto passes = [&](uint64_t seed, Comparison* comparison) {
+    const RenderRecipe recipe = atSpp.recipe(variant, EarlierStages::Reference, seed);
+    const RenderResult render = runRender(tracer, recipe);
+    const std::map<std::string, std::string> metadata(render.metadata.begin(),
+                                                      render.metadata.end());
+    *comparison = compareWithReference(render.images, metadata, reference, settings);
+    return comparison->passed(settings);
+  };
+  for (int i = 0; i < seeds; ++i) {
+    Comparison comparison, confirmation;
+    if (!passes(firstSeed + i, &comparison)) {
+      // As the grader does: a failure counts when a render with another seed fails too.
+      result.confirmedFailures += !passes(firstSeed + i + kConfirmationSeedOffset, &confirmation);
+      ++result.failures;
+      result.failedSeeds.push_back(firstSeed + i);
+      result.largestWorstP =
+          std::max(result.largestWorstP, std::min(comparison.worstTileP, comparison.omnibusP));
+    }
+    if (onSeed) onSeed(i + 1);
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace pathway

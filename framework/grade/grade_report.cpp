@@ -1,0 +1,358 @@
+#include "grade/grade_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.h"
+#include "grade/statistics.h"
+#include "io/image_io.h"
+
+namespace pathway {
+
+std::string escapeHtml(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const Color kNegative(0.05f, 0.2f, 1.0f);
+const Color kPositive(1.0f, 0.1f, 0.05f);
+const Color kNeutral(1.0f, 1.0f, 1.0f);
+const Color kOutline(1.0f, 0.85f, 0.0f);
+const char* const kReportMarker = ".pathway-report";
+
+Color diverging(double x) {  // x in [-1, 1]
+  const float a = static_cast<float>(std::min(1.0, std::fabs(x)));
+  return glm::mix(kNeutral, x < 0 ? kNegative : kPositive, a);
+}
+
+std::string fixed(double value, int digits) {
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(digits);
+  out << value;
+  return out.str();
+}
+
+std::string general(double value) {
+  std::ostringstream out;
+  out.precision(3);
+  out << value;
+  return out.str();
+}
+
+// The text with every invalid UTF-8 sequence (a compiler's output cut in the middle of a
+// character, a stage printing bytes) replaced by U+FFFD: JSON readers refuse invalid UTF-8.
+std::string validUtf8(const std::string& text) {
+  std::string out;
+  for (size_t i = 0; i < text.size();) {
+    const auto lead = static_cast<unsigned char>(text[i]);
+    const size_t length = lead < 0x80           ? 1
+                          : (lead >> 5) == 0x6  ? 2
+                          : (lead >> 4) == 0xE  ? 3
+                          : (lead >> 3) == 0x1E ? 4
+                                                : 0;
+    bool valid = length > 0 && i + length <= text.size();
+    for (size_t k = 1; valid && k < length; ++k)
+      valid = (static_cast<unsigned char>(text[i + k]) >> 6) == 0x2;
+    if (valid) {
+      out.append(text, i, length);
+      i += length;
+    } else {
+      out += "\xEF\xBF\xBD";
+      ++i;
+    }
+  }
+  return out;
+}
+
+std::string json(const std::string& text) {
+  std::string out = "\"";
+  for (unsigned char c : validUtf8(text)) {
+    switch (c) {
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      default:
+        if (c < 0x20) {
+          char escaped[8];
+          std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
+          out += escaped;
+        } else {
+          out += static_cast<char>(c);
+        }
+    }
+  }
+  return out + "\"";
+}
+
+// Writes `text` to a temporary file beside `path`, then renames it into place.
+void writeTextAtomically(const std::string& path, const std::string& text) {
+  const fs::path target(path);
+  std::error_code ignored;
+  if (target.has_parent_path()) fs::create_directories(target.parent_path(), ignored);
+  if (target.has_parent_path() && !fs::is_directory(target.parent_path()))
+    throw PathwayError(path + ": cannot create the folder " + target.parent_path().string());
+  const fs::path temporary = target.parent_path() / (".partial-" + target.filename().string());
+  {
+    std::ofstream out(temporary, std::ios::binary);
+    out << text;
+    if (!out.flush()) throw PathwayError(path + ": writing failed");
+  }
+  std::error_code error;
+  fs::rename(temporary, target, error);
+  if (error) throw PathwayError(path + ": could not move the finished file into place");
+}
+
+}  // namespace
+
+std::string CaseResult::describe(const ComparisonSettings& settings) const {
+  std::ostringstream out;
+  out << (passed ? "PASSED" : "FAILED") << " (" << purpose << ")\n";
+  if (!problem.empty()) out << problem << "\n";
+  if (!note.empty()) out << note << "\n";
+  for (const std::string& todo : todos) out << "unfinished code ran: TODO at " << todo << "\n";
+  if (compared) out << comparison.describe(settings);
+  if (seconds > 0.0)
+    out << "your render: " << fixed(seconds, 2) << " s, " << fixed(raysPerSecond * 1e-6, 1)
+        << " M rays/s; the reference: " << fixed(referenceSeconds, 2) << " s, "
+        << fixed(referenceRaysPerSecond * 1e-6, 1) << " M rays/s\n";
+  return out.str();
+}
+
+double GradeSummary::points() const {
+  double sum = 0.0;
+  for (const CaseResult& c : cases) sum += c.points;
+  return sum;
+}
+
+double GradeSummary::maxPoints() const {
+  double sum = 0.0;
+  for (const CaseResult& c : cases) sum += c.maxPoints;
+  return sum;
+}
+
+bool GradeSummary::passed() const {
+  return std::all_of(cases.begin(), cases.end(), [](const CaseResult& c) { return c.passed; });
+}
+
+Image zHeatmap(const Comparison& comparison) {
+  Image map(comparison.width, comparison.height);
+  // Colours saturate at the |z| where a tile fails.
+  const double zFail =
+      comparison.tileThresholdP > 0.0 ? -normalQuantile(0.5 * comparison.tileThresholdP) : 5.0;
+  for (const TileVerdict& tile : comparison.tiles) {
+    int channel = 0;
+    for (int c = 1; c < 3; ++c)
+      if (std::fabs(tile.z[c]) > std::fabs(tile.z[channel])) channel = c;
+    const Color colour = diverging(tile.z[channel] / zFail);
+    for (int y = tile.y0; y < tile.y1; ++y) {
+      for (int x = tile.x0; x < tile.x1; ++x) {
+        const bool edge = x == tile.x0 || y == tile.y0 || x == tile.x1 - 1 || y == tile.y1 - 1;
+        map.at(x, y) = tile.failed && edge ? kOutline : colour;
+      }
+    }
+  }
+  return map;
+}
+
+Image differenceImage(const Image& image, const Image& reference) {
+  Image result(image.width, image.height);
+  if (image.width != reference.width || image.height != reference.height) return result;
+  std::vector<double> differences(image.pixels.size());
+  auto luminance = [](const Color& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; };
+  for (size_t i = 0; i < image.pixels.size(); ++i)
+    differences[i] = luminance(image.pixels[i]) - luminance(reference.pixels[i]);
+  std::vector<double> magnitudes(differences.size());
+  std::transform(differences.begin(), differences.end(), magnitudes.begin(),
+                 [](double d) { return std::isfinite(d) ? std::fabs(d) : 0.0; });
+  const size_t rank = magnitudes.size() * 99 / 100;
+  std::nth_element(magnitudes.begin(), magnitudes.begin() + rank, magnitudes.end());
+  const double scale = std::max(magnitudes[rank], 1e-12);
+  for (size_t i = 0; i < differences.size(); ++i)
+    result.pixels[i] = diverging(std::isfinite(differences[i]) ? differences[i] / scale : 0.0);
+  return result;
+}
+
+namespace {
+
+fs::path reportTarget(const std::string& folder) {
+  fs::path target = fs::absolute(folder).lexically_normal();
+  if (target.filename().empty()) target = target.parent_path();  // "out/" is "out"
+  return target;
+}
+
+}  // namespace
+
+void checkReportFolder(const std::string& folder) {
+  // The folder is replaced, so it must be one this program made (or a new one): never ".",
+  // a home folder or a project that a mistyped --report names.
+  const fs::path target = reportTarget(folder);
+  if (target == target.root_path() || target.filename() == "..")
+    throw PathwayError(folder + ": not a folder a report can replace");
+  std::error_code error;
+  if (fs::exists(target) && !fs::is_empty(target, error) && !fs::exists(target / kReportMarker))
+    throw PathwayError(folder +
+                       ": exists and is not a Pathway report folder, so it is not "
+                       "replaced; choose another --report");
+}
+
+void writeHtmlReport(const std::string& folder, const GradeSummary& summary,
+                     const ComparisonSettings& settings,
+                     const std::map<std::string, std::string>& extraFiles) {
+  checkReportFolder(folder);
+  const fs::path target = reportTarget(folder);
+  std::error_code error;
+  const fs::path temporary = target.parent_path() / (".partial-" + target.filename().string());
+  fs::remove_all(temporary, error);
+  fs::create_directories(temporary / "images", error);
+  if (error) throw PathwayError(folder + ": cannot create the report folder: " + error.message());
+  std::ofstream(temporary / kReportMarker) << "written by pathway grade; replaced by the next\n";
+  for (const auto& [name, content] : extraFiles) std::ofstream(temporary / name) << content;
+
+  std::ostringstream page;
+  page << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
+       << "<title>" << escapeHtml(summary.title) << "</title>\n<style>\n"
+       << "body{font-family:sans-serif;margin:2em;max-width:80em;color:#222}\n"
+       << "h2{margin-top:2em;border-bottom:1px solid #ccc}\n"
+       << ".pass{color:#17692b}.fail{color:#b3261e}\n"
+       << "figure{display:inline-block;margin:0 1em 1em 0;text-align:center}\n"
+       << "figure img{width:240px;image-rendering:pixelated;border:1px solid #999}\n"
+       << "table{border-collapse:collapse}td,th{padding:2px 10px;text-align:left}\n"
+       << "pre{background:#f4f4f4;padding:.5em;white-space:pre-wrap}\n"
+       << "</style></head><body>\n";
+  page << "<h1>" << escapeHtml(summary.title) << "</h1>\n";
+  page << "<p class=\"" << (summary.passed() ? "pass" : "fail") << "\"><b>"
+       << fixed(summary.points(), 1) << " / " << fixed(summary.maxPoints(), 1) << " points</b>"
+       << " &middot; " << summary.cases.size() << " cases &middot; graded in "
+       << fixed(summary.seconds, 1) << " s</p>\n";
+  for (const std::string& note : summary.notes) page << "<p>" << escapeHtml(note) << "</p>\n";
+  page << "<table><tr><th>case</th><th>verdict</th><th>worst tile p</th><th>omnibus p</th>"
+       << "<th>your time</th><th>reference time</th></tr>\n";
+  for (const CaseResult& c : summary.cases) {
+    page << "<tr><td><a href=\"#" << escapeHtml(c.id) << "\">" << escapeHtml(c.title)
+         << "</a></td><td class=\"" << (c.passed ? "pass\">pass" : "fail\">FAIL") << "</td><td>"
+         << (c.compared && c.comparison.hardFailures.empty() ? general(c.comparison.worstTileP)
+                                                             : "&ndash;")
+         << "</td><td>"
+         << (c.compared && c.comparison.hardFailures.empty() ? general(c.comparison.omnibusP)
+                                                             : "&ndash;")
+         << "</td><td>" << (c.seconds > 0 ? fixed(c.seconds, 2) + " s" : "&ndash;") << "</td><td>"
+         << (c.referenceSeconds > 0 ? fixed(c.referenceSeconds, 2) + " s" : "&ndash;")
+         << "</td></tr>\n";
+  }
+  page << "</table>\n";
+
+  for (const CaseResult& c : summary.cases) {
+    page << "<h2 id=\"" << escapeHtml(c.id) << "\">" << escapeHtml(c.title)
+         << " &mdash; <span class=\"" << (c.passed ? "pass\">passed" : "fail\">failed")
+         << "</span></h2>\n";
+    if (c.compared && !c.image.pixels.empty()) {
+      auto figure = [&](const std::string& name, const Image& image, const std::string& caption) {
+        writePng((temporary / "images" / (c.id + "-" + name + ".png")).string(), image, 0.0f);
+        page << "<figure><img src=\"images/" << escapeHtml(c.id) << "-" << name << ".png\" alt=\""
+             << escapeHtml(caption) << "\"><figcaption>" << escapeHtml(caption)
+             << "</figcaption></figure>\n";
+      };
+      figure("image", c.image, "yours");
+      figure("reference", c.reference, "reference");
+      if (!c.comparison.tiles.empty())
+        figure("z", zHeatmap(c.comparison),
+               "signed z per tile (blue: darker, red: brighter; yellow: failing)");
+      if (c.image.width == c.reference.width && c.image.height == c.reference.height)
+        figure("difference", differenceImage(c.image, c.reference),
+               "difference (yours − reference)");
+    }
+    page << "<pre>" << escapeHtml(c.describe(settings)) << "</pre>\n";
+    if (c.compared && c.comparison.hardFailures.empty()) {
+      const Comparison& k = c.comparison;
+      page << "<table><tr><td>worst tile p (corrected)</td><td>" << general(k.worstTileP)
+           << "</td></tr><tr><td>failing tiles</td><td>" << k.failingTiles << " of "
+           << k.tiles.size() << "</td></tr><tr><td>omnibus p (corrected)</td><td>"
+           << general(k.omnibusP) << "</td></tr><tr><td>&Sigma;z&sup2; p per channel</td><td>"
+           << general(k.chiSquaredP[0]) << ", " << general(k.chiSquaredP[1]) << ", "
+           << general(k.chiSquaredP[2]) << "</td></tr><tr><td>mean-shift p per channel</td><td>"
+           << general(k.meanShiftP[0]) << ", " << general(k.meanShiftP[1]) << ", "
+           << general(k.meanShiftP[2]) << "</td></tr><tr><td>NaN / infinite pixels</td><td>"
+           << k.nonFinitePixels << "</td></tr><tr><td>degrees of freedom</td><td>"
+           << general(k.degreesOfFreedom) << "</td></tr></table>\n";
+    }
+  }
+  page << "</body></html>\n";
+  {
+    std::ofstream out(temporary / "index.html", std::ios::binary);
+    out << page.str();
+    if (!out.flush()) throw PathwayError(folder + ": writing the report failed");
+  }
+  // The old report moves aside before the new one moves in, so one of them is always whole.
+  const fs::path old = target.parent_path() / (".old-" + target.filename().string());
+  fs::remove_all(old, error);
+  if (fs::exists(target)) fs::rename(target, old, error);
+  if (!error) fs::rename(temporary, target, error);
+  if (error) throw PathwayError(folder + ": could not move the finished report into place");
+  fs::remove_all(old, error);
+}
+
+std::string gradescopeResults(const GradeSummary& summary, const ComparisonSettings& settings) {
+  std::ostringstream out;
+  std::string overall = summary.title + "\n";
+  for (const std::string& note : summary.notes) overall += note + "\n";
+  out << "{\n  \"score\": " << fixed(summary.points(), 2)
+      << ",\n  \"execution_time\": " << fixed(summary.seconds, 1)
+      << ",\n  \"output\": " << json(overall) << ",\n  \"visibility\": \"visible\",\n"
+      << "  \"stdout_visibility\": \"hidden\",\n  \"tests\": [";
+  for (size_t i = 0; i < summary.cases.size(); ++i) {
+    const CaseResult& c = summary.cases[i];
+    out << (i ? "," : "") << "\n    {\"name\": " << json(c.title)
+        << ", \"score\": " << fixed(c.points, 2) << ", \"max_score\": " << fixed(c.maxPoints, 2)
+        << ", \"status\": \"" << (c.passed ? "passed" : "failed")
+        << "\", \"output\": " << json(c.describe(settings))
+        << ", \"visibility\": \"visible\", \"extra_data\": {\"image\": \""
+        << (!c.compared                     ? "none"
+            : c.comparison.passed(settings) ? "pass"
+                                            : "fail")
+        << "\", \"todos\": " << c.todos.size() << "}}";
+  }
+  out << "\n  ]\n}\n";
+  return out.str();
+}
+
+void writeGradescopeResults(const std::string& path, const GradeSummary& summary,
+                            const ComparisonSettings& settings) {
+  writeTextAtomically(path, gradescopeResults(summary, settings));
+}
+
+}  // namespace pathway

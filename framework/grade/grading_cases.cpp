@@ -1,0 +1,179 @@
+#include "grade/grading_cases.h"
+
+#include "core/error.h"
+
+namespace pathway {
+namespace {
+
+// A case at the defaults (96x96, box filter, the stage's own sampler), changed one setting at a
+// time so the table below reads as a list of what each case does differently.
+struct CaseBuilder {
+  GradingCase c;
+  CaseBuilder(int stage, std::string name, std::string scene, std::string purpose) {
+    c.stage = stage;
+    c.name = std::move(name);
+    c.scene = std::move(scene);
+    c.purpose = std::move(purpose);
+  }
+  CaseBuilder& param(const std::string& name, const std::string& value) {
+    c.params[name] = value;
+    return *this;
+  }
+  CaseBuilder& filter(FilterType type, float radius = 0.0f) {
+    c.filter = type;
+    c.filterRadius = radius;
+    return *this;
+  }
+  CaseBuilder& sobol() {
+    c.sobol = true;
+    return *this;
+  }
+  CaseBuilder& size(int width, int height) {
+    c.width = width;
+    c.height = height;
+    return *this;
+  }
+  CaseBuilder& spp(uint32_t samples) {
+    c.spp = samples;
+    return *this;
+  }
+  CaseBuilder& tiles(int size) {
+    c.tileSize = size;
+    return *this;
+  }
+};
+
+std::vector<GradingCase> declareCases() {
+  using B = CaseBuilder;
+  const B cases[] = {
+      // Stage 1: edges and flat regions under every filter; Mitchell at low spp.
+      B(1, "cornell-box", "cornell_box.gltf",
+        "a box stretched over neighbouring pixels: splat reach, half-pixel offsets")
+          .filter(FilterType::Box, 0.75f)
+          .spp(16)
+          .tiles(2),
+      B(1, "edges-tent", "grading_edges.gltf", "tent profile and its support over hard edges")
+          .filter(FilterType::Tent)
+          .size(96, 72)
+          .spp(32)
+          .tiles(2),
+      B(1, "edges-mitchell", "grading_edges.gltf",
+        "Mitchell-Netravali lobes at low spp; numerical normalisation")
+          .filter(FilterType::MitchellNetravali)
+          .size(96, 72)
+          .spp(4)
+          .tiles(2),
+      B(1, "edges-gaussian", "grading_edges.gltf",
+        "Gaussian profile and cut-off at a stretched radius")
+          .filter(FilterType::Gaussian, 2.5f)
+          .size(96, 72)
+          .spp(16)
+          .tiles(2),
+      // Stage 2: cosine weighting, pdf, AO distance.
+      B(2, "cornell-box", "cornell_box.gltf", "AO estimate with contact shadows")
+          .param("ao-rays", "2")
+          .param("ao-distance", "0.3")
+          .spp(8),
+      B(2, "ceiling", "ceiling.gltf", "cosine weighting and ray length: (h/r)^2")
+          .param("ao-rays", "2")
+          .param("ao-distance", "2")
+          .size(64, 64)
+          .spp(8),
+      B(2, "lights", "grading_lights.gltf", "AO in an open room, background for misses")
+          .param("ao-rays", "2")
+          .param("ao-distance", "0.5")
+          .filter(FilterType::Tent)
+          .spp(8),
+      // Stage 3: the same integral, one 4D point per sample.
+      B(3, "cornell-box", "cornell_box.gltf", "4D AO from Sobol' dimensions 2-3")
+          .param("ao-distance", "0.3")
+          .sobol()
+          .spp(16),
+      B(3, "corner", "corner.gltf", "AO = 1/4 in an inside corner")
+          .param("ao-distance", "1e6")
+          .sobol()
+          .size(64, 64)
+          .spp(16),
+      B(3, "lights", "grading_lights.gltf", "4D AO in an open room")
+          .param("ao-distance", "0.5")
+          .sobol()
+          .spp(16),
+      // Stage 4: a small branching factor and depth.
+      B(4, "cornell-box", "cornell_box.gltf", "emission plus two bounces of recursion")
+          .param("branching", "2")
+          .param("depth", "2")
+          .spp(8),
+      B(4, "lights", "grading_lights.gltf",
+        "direct light by recursion, background, one-sided emitters")
+          .param("branching", "3")
+          .param("depth", "1")
+          .spp(8),
+      // Stage 5: NEE on and off, small and touching lights, one-sided emitters, background.
+      B(5, "cornell-box", "cornell_box.gltf", "path tracing with NEE and Russian roulette").spp(16),
+      B(5, "cornell-box-no-nee", "cornell_box.gltf", "emission found by bounces, counted once")
+          .param("nee", "off")
+          .spp(64),
+      B(5, "small-light", "small_light.gltf", "NEE towards a small emitter: the area pdf")
+          .param("max-depth", "2")
+          .size(64, 64)
+          .spp(16),
+      B(5, "light-touching-wall", "light_touching_wall.gltf",
+        "shadow rays that start or end at a contact line")
+          .param("max-depth", "3")
+          .spp(16),
+      B(5, "lights-area", "grading_lights.gltf",
+        "emitters of different size and radiance, one seen from behind")
+          .param("light-pick", "area")
+          .spp(32),
+  };
+  std::vector<GradingCase> result;
+  for (const B& b : cases) result.push_back(b.c);
+  return result;
+}
+
+}  // namespace
+
+RenderRecipe GradingCase::recipe(Variant variant, EarlierStages earlier, uint64_t seed) const {
+  const IntegratorInfo* info = findStageIntegrator(stage, variant);
+  if (!info)
+    throw PathwayError("the " + std::string(variantName(variant)) + " stage " +
+                       std::to_string(stage) + " is not built into this program");
+  RenderRecipe recipe;
+  recipe.integrator = info->name;
+  recipe.params = resolveParams(info->name, info->params, params);
+  recipe.earlierStages = earlier;
+  RenderSettings& s = recipe.settings;
+  s.width = width;
+  s.height = height;
+  s.samplesPerPixel = s.samplesPerPass = spp;
+  s.sampler = sobol ? SamplerType::Sobol : info->defaultSampler;
+  s.seed = seed;
+  s.filter = filter;
+  s.filterRadius = filterRadius;
+  return recipe;
+}
+
+const std::vector<GradingCase>& gradingCases() {
+  static const std::vector<GradingCase> cases = declareCases();
+  return cases;
+}
+
+std::vector<const GradingCase*> gradingCasesOf(int stage) {
+  std::vector<const GradingCase*> result;
+  for (const GradingCase& c : gradingCases())
+    if (c.stage == stage) result.push_back(&c);
+  if (result.empty())
+    throw PathwayError("stage " + std::to_string(stage) + " has no grading cases");
+  return result;
+}
+
+const GradingCase& findGradingCase(const std::string& id) {
+  std::string known;
+  for (const GradingCase& c : gradingCases()) {
+    if (c.id() == id) return c;
+    known += (known.empty() ? "" : ", ") + c.id();
+  }
+  throw PathwayError("unknown grading case '" + id + "' (known: " + known + ")");
+}
+
+}  // namespace pathway

@@ -1,0 +1,53 @@
+// The course's grading cases: for each stage, a few scenes and settings picked so that the
+// stage's typical bugs change the image somewhere, with the sample count a submission renders at.
+// The references are made from solutions/ at kReferenceReplicates times that sample count
+// (`pathway grade --make-references`) and shipped with the handout.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/variant.h"
+#include "film/pixel_filter.h"
+#include "render/render_session.h"
+
+namespace pathway {
+
+// Independent renders that make up a reference: their mean is the reference image (at
+// kReferenceReplicates times the student's spp), their spread the variance of one student render.
+constexpr int kReferenceReplicates = 64;
+// Seeds: a submission renders with kStudentSeed, reference replicate i with kReferenceSeed + i.
+constexpr uint64_t kStudentSeed = 1;
+constexpr uint64_t kReferenceSeed = 1000000;
+
+struct GradingCase {
+  int stage = 1;
+  std::string name;                           // unique within the stage: "cornell-tent"
+  std::string scene;                          // file name under scenes/
+  std::map<std::string, std::string> params;  // as on the command line; the rest at defaults
+  FilterType filter = FilterType::Box;
+  float filterRadius = 0.0f;  // 0: natural
+  bool sobol = false;         // else the stage's own default sampler
+  int width = 96, height = 96;
+  uint32_t spp = 16;  // what a submission renders at
+  // Pixels per side of a tested tile: small where the bugs to catch move light only a pixel or
+  // two (a filter's shape barely changes an 8x8 tile's mean), large where samples are rare
+  // events that need many per tile.
+  int tileSize = 8;
+  std::string purpose;  // one line: what it is there to catch
+
+  std::string id() const { return "stage" + std::to_string(stage) + "-" + name; }
+  // The reference file's name under the references folder.
+  std::string referenceFile() const { return id() + ".exr"; }
+  // The recipe for this case: the stage in `variant`, earlier stages from `earlier`.
+  RenderRecipe recipe(Variant variant, EarlierStages earlier, uint64_t seed) const;
+};
+
+const std::vector<GradingCase>& gradingCases();
+// The cases of one stage; throws PathwayError for a stage that has none.
+std::vector<const GradingCase*> gradingCasesOf(int stage);
+// Throws PathwayError naming the known ids.
+const GradingCase& findGradingCase(const std::string& id);
+
+}  // namespace pathway

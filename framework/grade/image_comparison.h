@@ -1,0 +1,106 @@
+// Compares a rendered image with a reference the way the grader does (docs/grading.md):
+//   1. hard checks, each with its own message: size, non-finite pixels, dropped non-finite
+//      samples, negative pixels where the filter cannot make them;
+//   2. a test per tile and channel: t = (m_image - m_reference) / sqrt(V + floor²), where V is the
+//      variance of the difference of the tile means; with V from R reference replicates t follows
+//      Student's t with R - 1 degrees of freedom (where the render's own variance estimate is
+//      larger, it replaces the replicates' up to a cap, which only makes the test more cautious).
+//      The smallest p over all tiles and channels is Šidák-corrected to the family-wise level;
+//   3. omnibus tests per channel on the same statistics over blocks (8x8 pixels, larger than a
+//      filter's reach, so nearly independent) mapped to N(0, 1): Σ z² ~ χ²(blocks), which catches
+//      differences spread thinly over many blocks, and Σ z / sqrt(blocks) ~ N(0, 1), which
+//      catches a small bias of one sign everywhere. Bonferroni over the six.
+// The image passes when no hard check fails and neither family-wise p is below its α.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "film/film.h"
+
+namespace pathway {
+
+// The test's settings, declared once.
+struct ComparisonSettings {
+  int tileSize = 8;            // pixels per tile side
+  int omnibusBlockSize = 8;    // pixels per side of the blocks the omnibus tests add up
+  double tileAlpha = 5e-4;     // family-wise false-alarm rate of the tile tests
+  double omnibusAlpha = 5e-4;  // family-wise false-alarm rate of the six omnibus tests
+  // Differences this small are never significant, even where the reference has no noise at all
+  // (background, flat eye-light regions): float rounding between equivalent implementations.
+  double relativeFloor = 1e-4;
+  double absoluteFloor = 1e-6;
+  // The render's own variance estimate may raise a tile's variance up to this many times the
+  // replicates' (100 standard deviations): a rare sample the 64 replicates never drew (a firefly,
+  // a hit on a sub-pixel sliver) can be that far out, measured over 1000 seeds; a bias spread over
+  // many tiles is still caught by the omnibus tests.
+  double ownVarianceCap = 1e4;
+  // The omnibus tests clamp each block's z to ±this (P(|z| > 5) = 6e-7 for a correct stage).
+  double omnibusClamp = 5.0;
+};
+
+struct ComparisonInput {
+  const Image* image = nullptr;      // the submission's render
+  const Image* reference = nullptr;  // the reference's mean
+  // The variance of ONE render's tile mean (constant over each tile's pixels), from `replicates`
+  // independent reference renders at the submission's spp. Without it (nullptr), the variances
+  // come from the two images' per-pixel variance estimates, summed over the tile as if pixels
+  // were independent (true for the box filter), and t is taken as normal.
+  const Image* tileVariance = nullptr;
+  const Image* blockVariance = nullptr;  // the same for the omnibus blocks (nullptr: use tiles)
+  int replicates = 0;
+  const Image* imageVariance = nullptr;      // per pixel: the render's own variance estimate
+  const Image* referenceVariance = nullptr;  // per pixel, when tileVariance is absent
+  // Var(Σ z) / blocks over the replicates: above 1 where a wide filter correlates neighbouring
+  // blocks. The mean-shift test divides by it.
+  glm::dvec3 blockCorrelation{1.0};
+  // Without replicates: how much the filter inflates a tile's variance over the sum of its
+  // pixels' (1 for the box filter, whose pixels are independent).
+  double pixelCorrelation = 1.0;
+  bool negativeValuesAllowed = false;  // the filter has negative lobes
+  uint64_t droppedSamples = 0;         // non-finite samples the render dropped
+};
+
+struct TileVerdict {
+  int x0, y0, x1, y1;  // pixels [x0, x1) x [y0, y1)
+  Color t{0.0f};       // per channel
+  Color z{0.0f};       // t mapped to N(0, 1)
+  double p = 1.0;      // smallest two-sided p of the three channels
+  bool failed = false;
+};
+
+struct Comparison {
+  std::vector<std::string> hardFailures;  // empty when the hard checks pass
+  int width = 0, height = 0;
+  size_t nonFinitePixels = 0, negativePixels = 0;
+  int tileSize = 0;                // pixels per tile side
+  std::vector<TileVerdict> tiles;  // row by row; empty when a hard check stopped the comparison
+  double degreesOfFreedom = 0.0;   // of the tile statistics (infinity: normal)
+  double tileThresholdP = 0.0;     // a tile fails below this p (Šidák over tiles x 3)
+  double worstTileP = 1.0;         // family-wise p of the most extreme tile
+  size_t failingTiles = 0;
+  double chiSquaredP[3] = {1, 1, 1};    // per channel, Σ z² ~ χ²(tiles)
+  double meanShiftP[3] = {1, 1, 1};     // per channel, Σ z / sqrt(tiles) ~ N(0, 1)
+  double omnibusP = 1.0;                // family-wise (Bonferroni over the six)
+  double meanRelativeDifference = 0.0;  // (mean image - mean reference) / mean reference
+
+  bool passed(const ComparisonSettings& settings) const;
+  // A few lines for a person: the hard failures, or the numbers of the statistical tests.
+  std::string describe(const ComparisonSettings& settings) const;
+};
+
+// Throws nothing for bad images: every problem becomes a hard failure.
+Comparison compareImages(const ComparisonInput& input, const ComparisonSettings& settings = {});
+
+// Per tile and channel: the variance of one render's tile mean over `replicates` images
+// (each the same size), constant over each tile's pixels. Used to make references.
+Image replicateTileVariance(const std::vector<Image>& replicates, int tileSize);
+// Var(Σ_blocks (m - mean) / sd) / blocks over the replicates, per channel (see blockCorrelation).
+glm::dvec3 replicateBlockCorrelation(const std::vector<Image>& replicates, int blockSize);
+
+// An upper bound on how much a filter of this radius (in pixels) inflates the variance of a sum
+// of pixels over the sum of their variances: the number of pixels one sample reaches.
+double filterPixelCorrelation(double filterRadius);
+
+}  // namespace pathway

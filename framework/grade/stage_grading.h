@@ -1,0 +1,56 @@
+// Grading stages on their cases: each case renders in a child process of this program with a
+// time limit (`pathway grade --render-case`), so a stage that crashes or hangs fails that case
+// and nothing else; this process reads the render back and compares it with the reference.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "grade/grade_report.h"
+#include "grade/grading_cases.h"
+#include "grade/grading_reference.h"
+#include "io/image_io.h"
+
+namespace pathway {
+
+constexpr double kPointsPerStage = 20.0;  // split evenly over the stage's cases
+// A case may render for kCaseTimeFactor times the reference's time, at least
+// kMinimumCaseSeconds, at most GradingRun::timeLimit.
+constexpr double kCaseTimeFactor = 50.0;
+constexpr double kMinimumCaseSeconds = 15.0;
+// A failed case is rendered again with this much added to the seed; it fails only if both fail.
+constexpr uint64_t kConfirmationSeedOffset = 1000;
+
+struct GradingRun {
+  std::vector<const GradingCase*> cases;
+  bool together = false;        // the student's earlier stages instead of the reference's
+  bool gradeReference = false;  // grade the reference stages themselves (calibration, tests)
+  // Student stages built on their own (render/stage_library.h), loaded over the built-in ones.
+  std::vector<std::string> stageLibraries;
+  std::string references;    // folder of the reference files
+  std::string scenes;        // folder of the scenes
+  double timeLimit = 120.0;  // seconds per case
+  uint64_t seed = kStudentSeed;
+  bool progress = true;  // one line per case on stderr
+};
+
+// The points of case `index` of a stage's `count` cases: kPointsPerStage split evenly, to a
+// hundredth, the last case taking the remainder so that they add up exactly.
+double casePoints(int index, int count);
+
+// Grades every case of the run; never throws for a case (its problem is in its result).
+GradeSummary gradeStages(const GradingRun& run, const ComparisonSettings& settings);
+
+// The child's part: renders one case as the run says and writes it to `output` (EXR).
+void renderGradingCase(const GradingCase& gradingCase, const GradingRun& run,
+                       const std::string& output);
+
+// Fills in `result` from a render and its reference: verdict, images, timings, TODOs that ran.
+void judgeAgainstReference(CaseResult& result, const LoadedImage& render,
+                           const GradingReference& reference, const ComparisonSettings& settings);
+
+// The arguments that make this program render one case in a child process.
+std::vector<std::string> renderCaseArguments(const GradingCase& gradingCase, const GradingRun& run,
+                                             const std::string& output);
+
+}  // namespace pathway

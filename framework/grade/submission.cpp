@@ -1,0 +1,79 @@
+#include "grade/submission.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "core/child_process.h"
+#include "core/error.h"
+#include "render/stage_catalog.h"
+#include "render/stage_library.h"
+
+namespace pathway {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool isSource(const fs::path& path) {
+  const std::string ext = path.extension().string();
+  return ext == ".cpp" || ext == ".cc" || ext == ".cxx" || ext == ".c";
+}
+
+}  // namespace
+
+Submission findSubmission(const std::string& folder) {
+  if (!fs::is_directory(folder)) throw PathwayError(folder + ": not a folder");
+  Submission submission;
+  submission.folder = fs::absolute(folder).lexically_normal().string();
+  submission.name = fs::path(submission.folder).filename().string();
+  std::map<std::string, int> stageOfFile;
+  for (int stage = 1; stage <= kStageCount; ++stage)
+    stageOfFile[stageDeclaration(stage).file] = stage;
+  std::vector<fs::path> paths;
+  for (const auto& entry : fs::recursive_directory_iterator(folder))
+    if (entry.is_regular_file()) paths.push_back(entry.path());
+  std::sort(paths.begin(), paths.end());  // the same choice on every machine
+  for (const fs::path& path : paths) {
+    const auto stage = stageOfFile.find(path.filename().string());
+    const std::string relative = fs::relative(path, folder).string();
+    if (stage == stageOfFile.end()) {
+      if (isSource(path)) submission.ignored.push_back(relative);
+    } else if (submission.files.count(stage->second)) {
+      submission.duplicates.push_back(relative);
+    } else {
+      submission.files[stage->second] = path.string();
+    }
+  }
+  for (int stage = 1; stage <= kStageCount; ++stage)
+    if (!submission.files.count(stage)) submission.missing.push_back(stageDeclaration(stage).file);
+  return submission;
+}
+
+SubmissionBuild buildSubmission(const Submission& submission, const std::string& buildFolder,
+                                double timeLimit) {
+  SubmissionBuild build;
+  fs::create_directories(buildFolder);
+  for (const auto& [stage, file] : submission.files) {
+    StageBuild& result = build.stages[stage];
+    const std::string name = "stage" + std::to_string(stage);
+    result.library = (fs::absolute(buildFolder) / (name + ".so")).string();
+    std::vector<std::string> command = stageLibraryCompileCommand();
+    // A stage file may include a header of its own beside it.
+    command.push_back("-I" + fs::path(file).parent_path().string());
+    command.push_back(file);
+    command.push_back("-o");
+    command.push_back(result.library);
+    std::error_code ignored;
+    fs::remove(result.library, ignored);
+    const ChildOutcome outcome =
+        runChild(command, timeLimit, buildFolder + "/" + name + "-build.log");
+    build.seconds += outcome.seconds;
+    result.log = outcome.output;
+    result.succeeded = outcome.succeeded() && fs::exists(result.library);
+    if (!result.succeeded)
+      result.problem = fs::path(file).filename().string() + " did not compile: the compiler " +
+                       outcome.describe(timeLimit);
+  }
+  return build;
+}
+
+}  // namespace pathway

@@ -1,0 +1,43 @@
+// A student's submission: a folder holding the stage files (a copy of assignments/, or just the
+// files, in any sub-folders), built on its own into a stage library (render/stage_library.h)
+// against this build of the framework, in a build folder of its own.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace pathway {
+
+struct Submission {
+  std::string name;  // the folder's name
+  std::string folder;
+  std::map<int, std::string> files;     // stage -> its file, for the stages found
+  std::vector<std::string> missing;     // stage files not found ("stage3_ao_4d.cpp")
+  std::vector<std::string> ignored;     // other source files, not compiled
+  std::vector<std::string> duplicates;  // a stage file found more than once (the first is used)
+};
+
+// Looks for the five stage files by name. Throws PathwayError when `folder` is not a folder.
+Submission findSubmission(const std::string& folder);
+
+// One stage file built into its own stage library, so that a file that does not compile costs
+// its own stage only.
+struct StageBuild {
+  bool succeeded = false;
+  std::string library;  // `buildFolder`/stageN.so, when it built
+  std::string log;      // the compiler's output (the end of it)
+  std::string problem;  // why it did not build, in one line
+};
+
+struct SubmissionBuild {
+  std::map<int, StageBuild> stages;  // for every stage file found
+  double seconds = 0.0;
+};
+
+// Compiles each of the submission's stage files into `buildFolder`/stageN.so, stopping the
+// compiler after `timeLimit` seconds per file.
+SubmissionBuild buildSubmission(const Submission& submission, const std::string& buildFolder,
+                                double timeLimit);
+
+}  // namespace pathway

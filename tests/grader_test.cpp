@@ -1,0 +1,227 @@
+// `pathway grade` end to end: the reference stages pass (fixed fresh seeds, so never flaky), every
+// planted bug of the mutant suite fails its stage while the harmless mutants pass, the untouched
+// skeletons fail on their images, a stage that crashes or hangs fails only its own case, and bad
+// input gets one message and a failed result. Output: results.json and an HTML report.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "io/image_io.h"
+#include "run_command.h"
+#include "stage_under_test.h"
+
+namespace pathway {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The tests of a results.json, as (status, image verdict, output) triples, by plain text search:
+// enough for a file this program wrote itself in a fixed layout.
+struct ResultLine {
+  std::string status, image, output;
+};
+std::vector<ResultLine> resultLines(const std::string& json) {
+  std::vector<ResultLine> lines;
+  for (size_t at = json.find("{\"name\""); at != std::string::npos;
+       at = json.find("{\"name\"", at + 1)) {
+    const size_t end = json.find('\n', at);
+    const std::string line = json.substr(at, end - at);
+    auto field = [&](const std::string& key) {
+      const size_t start = line.find("\"" + key + "\": \"");
+      if (start == std::string::npos) return std::string();
+      const size_t from = start + key.size() + 5;
+      return line.substr(from, line.find('"', from) - from);
+    };
+    const size_t output = line.find("\"output\": \"");
+    lines.push_back({field("status"), field("image"),
+                     output == std::string::npos ? "" : line.substr(output, line.size() - output)});
+  }
+  return lines;
+}
+
+class Grader : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("pathway_grade_" + std::to_string(::getpid()) + "_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // Runs `pathway grade <arguments>` with its report in the test's folder.
+  test::CommandOutcome grade(const std::string& arguments) {
+    return test::runCommand(std::string(PATHWAY_BINARY) + " grade -q --report " +
+                            (dir_ / "report").string() + " " + arguments);
+  }
+  std::vector<ResultLine> results() {
+    return resultLines(test::readTextFile((dir_ / "report/results.json").string()));
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(Grader, TheReferenceStagesPassWithFreshSeeds) {
+  if (!test::kHaveSolutions) GTEST_SKIP() << "needs solutions/ (the reference stages)";
+  const test::CommandOutcome outcome = grade("--grade-reference --seed 7");
+  EXPECT_EQ(outcome.exitCode, 0) << outcome.output;
+  const std::vector<ResultLine> lines = results();
+  EXPECT_GE(lines.size(), 15u);  // every grading case
+  for (const ResultLine& line : lines) {
+    EXPECT_EQ(line.status, "passed") << line.output;
+    EXPECT_EQ(line.image, "pass");
+  }
+  // The report has a page and four pictures per case.
+  EXPECT_TRUE(fs::exists(dir_ / "report/index.html"));
+  size_t pictures = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir_ / "report/images"))
+    ++pictures;
+  EXPECT_EQ(pictures, 4 * lines.size());
+  const std::string page = test::readTextFile((dir_ / "report/index.html").string());
+  EXPECT_NE(page.find("stage3-corner-z.png"), std::string::npos);
+  EXPECT_NE(page.find("worst tile p"), std::string::npos);
+  EXPECT_NE(page.find("M rays/s"), std::string::npos);  // your speed beside the reference's
+}
+
+TEST_F(Grader, TheUntouchedSkeletonsFailOnTheirImages) {
+  // In a handout, assignments/ holds the student's own work, no longer the skeletons.
+  if (!test::kHaveSolutions) GTEST_SKIP() << "needs the untouched skeletons";
+  for (int stage = 1; stage <= 5; ++stage) {
+    const test::CommandOutcome outcome = grade("--stage " + std::to_string(stage));
+    EXPECT_EQ(outcome.exitCode, 1) << outcome.output;
+    for (const ResultLine& line : results()) {
+      EXPECT_EQ(line.status, "failed") << "stage " << stage << ": " << line.output;
+      // The image itself is wrong, not only the TODO that ran.
+      EXPECT_EQ(line.image, "fail") << "stage " << stage << ": " << line.output;
+      EXPECT_NE(line.output.find("TODO at assignments/stage"), std::string::npos) << line.output;
+    }
+  }
+}
+
+TEST_F(Grader, BadInputGetsOneMessageAndAFailedResult) {
+  if (!test::kHaveSolutions) GTEST_SKIP() << "needs solutions/ (the reference stages)";
+  // A reference folder with one reference missing, one truncated, one from another case.
+  const fs::path references = dir_ / "references";
+  fs::create_directories(references);
+  const fs::path shipped = fs::path(PATHWAY_SCENES_DIR) / "references";
+  fs::copy_file(shipped / "stage1-edges-tent.exr", references / "stage1-edges-gaussian.exr");
+  const std::string whole = test::readTextFile((shipped / "stage1-edges-mitchell.exr").string());
+  std::ofstream(references / "stage1-edges-mitchell.exr", std::ios::binary)
+      << whole.substr(0, whole.size() / 3);
+  const test::CommandOutcome outcome =
+      grade("--grade-reference --stage 1 --references " + references.string());
+  EXPECT_EQ(outcome.exitCode, 1) << outcome.output;
+  const std::vector<ResultLine> lines = results();
+  ASSERT_EQ(lines.size(), 4u);
+  for (const ResultLine& line : lines) EXPECT_EQ(line.status, "failed");
+  EXPECT_NE(lines[0].output.find("stage1-cornell-box.exr"), std::string::npos) << lines[0].output;
+  EXPECT_NE(lines[2].output.find("stage1-edges-mitchell.exr"), std::string::npos)
+      << lines[2].output;
+  EXPECT_NE(lines[3].output.find("other settings"), std::string::npos) << lines[3].output;
+  EXPECT_EQ(outcome.output.find("internal error"), std::string::npos) << outcome.output;
+
+  // Two files of different sizes compared directly.
+  const std::string a = (dir_ / "a.exr").string(), b = (dir_ / "b.exr").string();
+  const std::string render = std::string(PATHWAY_BINARY) + " render " + PATHWAY_SCENES_DIR +
+                             "/cornell_box.gltf -q --spp 2 -i stage1";
+  ASSERT_EQ(test::runCommand(render + " --width 32 --height 32 -o " + a).exitCode, 0);
+  ASSERT_EQ(test::runCommand(render + " --width 40 --height 32 -o " + b).exitCode, 0);
+  const test::CommandOutcome sizes = grade("--image " + a + " --reference " + b);
+  EXPECT_EQ(sizes.exitCode, 1);
+  EXPECT_NE(results().at(0).output.find("32x32 pixels, the reference 40x32"), std::string::npos);
+  const test::CommandOutcome missing = grade("--image " + a + " --reference " + b + ".nope");
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(results().at(0).output.find("b.exr.nope"), std::string::npos);
+}
+
+TEST_F(Grader, TwoRendersCompareDirectlyThroughTheirVariances) {
+  if (!test::kHaveSolutions) GTEST_SKIP() << "needs solutions/ (the reference stages)";
+  const std::string render = std::string(PATHWAY_BINARY) + " render " + PATHWAY_SCENES_DIR +
+                             "/cornell_box.gltf -q --width 48 --height 48 -i stage2@ref --spp 8";
+  const std::string a = (dir_ / "a.exr").string(), b = (dir_ / "b.exr").string(),
+                    c = (dir_ / "c.exr").string();
+  ASSERT_EQ(test::runCommand(render + " --seed 1 -o " + a).exitCode, 0);
+  ASSERT_EQ(test::runCommand(render + " --seed 2 -o " + b).exitCode, 0);
+  ASSERT_EQ(test::runCommand(render + " --seed 3 -p ao-distance=0.5 -o " + c).exitCode, 0);
+  EXPECT_EQ(grade("--image " + a + " --reference " + b).exitCode, 0) << results().at(0).output;
+  EXPECT_EQ(grade("--image " + a + " --reference " + c).exitCode, 1);
+  EXPECT_NE(results().at(0).output.find("other settings (params"), std::string::npos);
+}
+
+// ---- The mutant suite (tests/mutants/CMakeLists.txt) ----
+#ifdef PATHWAY_MUTANT_LIST
+
+struct Mutant {
+  std::string name;
+  int stage = 0;
+  std::string expect;  // fail, pass, crash or hang
+  std::string library;
+  std::string description;
+};
+
+std::vector<Mutant> mutants() {
+  std::vector<Mutant> list;
+  std::ifstream in(PATHWAY_MUTANT_LIST);
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> fields;
+    std::stringstream parts(line);
+    for (std::string field; std::getline(parts, field, '|');) fields.push_back(field);
+    if (fields.size() == 5)
+      list.push_back({fields[0], std::stoi(fields[1]), fields[2], fields[3], fields[4]});
+  }
+  return list;
+}
+
+void PrintTo(const Mutant& mutant, std::ostream* out) {
+  *out << mutant.name << " (" << mutant.description << ")";
+}
+
+class GraderMutant : public Grader, public ::testing::WithParamInterface<Mutant> {};
+
+TEST_P(GraderMutant, IsJudgedByItsImage) {
+  const Mutant& mutant = GetParam();
+  const std::string stage = " --stage " + std::to_string(mutant.stage);
+  // A hang is stopped after 3 s; the other cases render in well under a second.
+  const std::string limit = mutant.expect == "hang" ? " --time-limit 3" : " --time-limit 60";
+  const test::CommandOutcome outcome = grade("--stages-library " + mutant.library + stage + limit);
+  const std::vector<ResultLine> lines = results();
+  ASSERT_FALSE(lines.empty()) << outcome.output;
+  size_t failed = 0, imageFailed = 0, crashed = 0, timedOut = 0;
+  for (const ResultLine& line : lines) {
+    failed += line.status == "failed";
+    imageFailed += line.image == "fail";
+    crashed += line.output.find("crashed (signal") != std::string::npos;
+    timedOut += line.output.find("ran past its time limit") != std::string::npos;
+  }
+  if (mutant.expect == "pass") {
+    EXPECT_EQ(outcome.exitCode, 0) << mutant.description << "\n"
+                                   << test::readTextFile((dir_ / "report/results.json").string());
+    EXPECT_EQ(failed, 0u);
+  } else if (mutant.expect == "fail") {
+    EXPECT_EQ(outcome.exitCode, 1) << mutant.description;
+    EXPECT_GE(imageFailed, 1u) << mutant.description << ": no case of stage " << mutant.stage
+                               << " saw the bug";
+    EXPECT_EQ(crashed + timedOut, 0u);
+  } else {
+    // Every case of the stage fails with the reason; the grader itself finishes.
+    EXPECT_EQ(outcome.exitCode, 1);
+    EXPECT_EQ(failed, lines.size());
+    EXPECT_EQ(mutant.expect == "crash" ? crashed : timedOut, lines.size())
+        << test::readTextFile((dir_ / "report/results.json").string());
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Mutants, GraderMutant, ::testing::ValuesIn(mutants()),
+                         [](const ::testing::TestParamInfo<Mutant>& info) {
+                           return info.param.name;
+                         });
+
+#endif  // PATHWAY_MUTANT_LIST
+
+}  // namespace
+}  // namespace pathway

@@ -1,0 +1,191 @@
+// The grader's image comparison on images with known statistics: it passes what is the same up to
+// the stated noise, fails a bias in one tile or a small one spread everywhere, and turns bad
+// images into hard failures with their own messages.
+#include "grade/image_comparison.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "grade/statistics.h"
+#include "sampling/pcg32.h"
+
+namespace pathway {
+namespace {
+
+constexpr int kSize = 64;  // 8 x 8 tiles of 8 x 8 pixels
+constexpr int kReplicates = 64;
+constexpr double kPixelSigma = 0.05;  // noise of one pixel of one render
+
+// A noisy render of a smooth image: value + N(0, sigma²) per pixel and channel.
+Image noisyRender(uint64_t seed, double bias = 0.0) {
+  Pcg32 rng(seed);
+  Image image(kSize, kSize);
+  for (int y = 0; y < kSize; ++y) {
+    for (int x = 0; x < kSize; ++x) {
+      for (int c = 0; c < 3; ++c) {
+        // Box-Muller from two uniforms.
+        const double u1 = 1.0 - rng.nextFloat(), u2 = rng.nextFloat();
+        const double normal = std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2);
+        image.at(x, y)[c] = static_cast<float>(0.5 + 0.3 * x / kSize + bias + kPixelSigma * normal);
+      }
+    }
+  }
+  return image;
+}
+
+struct Reference {
+  Image mean, tileVariance;
+};
+
+Reference makeReference() {
+  std::vector<Image> replicates;
+  for (int i = 0; i < kReplicates; ++i) replicates.push_back(noisyRender(1000 + i));
+  Reference reference{Image(kSize, kSize), replicateTileVariance(replicates, 8)};
+  for (size_t p = 0; p < reference.mean.pixels.size(); ++p) {
+    glm::dvec3 sum(0.0);
+    for (const Image& r : replicates) sum += glm::dvec3(r.pixels[p]);
+    reference.mean.pixels[p] = Color(sum / double(kReplicates));
+  }
+  return reference;
+}
+
+Comparison compare(const Image& image, const Reference& reference) {
+  ComparisonInput input;
+  input.image = &image;
+  input.reference = &reference.mean;
+  input.tileVariance = &reference.tileVariance;
+  input.replicates = kReplicates;
+  return compareImages(input);
+}
+
+TEST(ImageComparison, ReplicateTileVarianceMatchesTheNoiseModel) {
+  const Reference reference = makeReference();
+  // A tile mean of 64 independent pixels has variance sigma² / 64; estimated from 64 replicates,
+  // it is within 4.5 standard errors of that (relative SE of a variance: sqrt(2 / 63)).
+  const double expected = kPixelSigma * kPixelSigma / 64.0;
+  const double measured = reference.tileVariance.at(3, 3).y;
+  EXPECT_NEAR(measured, expected, 4.5 * std::sqrt(2.0 / 63.0) * expected);
+}
+
+TEST(ImageComparison, FreshRendersOfTheSameImagePass) {
+  const Reference reference = makeReference();
+  const ComparisonSettings settings;
+  for (uint64_t seed = 1; seed <= 20; ++seed) {
+    const Comparison result = compare(noisyRender(seed), reference);
+    EXPECT_TRUE(result.passed(settings)) << "seed " << seed << "\n" << result.describe(settings);
+    EXPECT_EQ(result.tiles.size(), 64u);
+    EXPECT_EQ(result.degreesOfFreedom, kReplicates - 1.0);
+  }
+}
+
+TEST(ImageComparison, OneBiasedTileFailsAndIsNamed) {
+  const Reference reference = makeReference();
+  Image image = noisyRender(7);
+  // A tile 0.05 brighter: 8 standard deviations of its mean (sigma / 8 = 0.00625).
+  for (int y = 16; y < 24; ++y)
+    for (int x = 40; x < 48; ++x) image.at(x, y) += Color(0.05f, 0.0f, 0.0f);
+  const ComparisonSettings settings;
+  const Comparison result = compare(image, reference);
+  EXPECT_FALSE(result.passed(settings));
+  EXPECT_EQ(result.failingTiles, 1u);
+  const TileVerdict& tile = result.tiles[2 * 8 + 5];
+  EXPECT_TRUE(tile.failed);
+  EXPECT_GT(tile.t.x, 5.0f);
+  EXPECT_LT(result.worstTileP, settings.tileAlpha);
+}
+
+TEST(ImageComparison, ASmallBiasEverywhereFailsTheOmnibusTest) {
+  const Reference reference = makeReference();
+  // 0.005 everywhere: 0.8 of a tile's standard deviation, far below what fails a single tile;
+  // over 64 tiles the mean of z shifts by 0.8 * sqrt(64) = 6.4 standard errors.
+  const ComparisonSettings settings;
+  const Comparison result = compare(noisyRender(8, 0.005), reference);
+  EXPECT_EQ(result.failingTiles, 0u);
+  EXPECT_LT(result.omnibusP, settings.omnibusAlpha) << result.describe(settings);
+  EXPECT_FALSE(result.passed(settings));
+}
+
+TEST(ImageComparison, BadImagesAreHardFailuresWithTheirOwnMessages) {
+  const Reference reference = makeReference();
+  const ComparisonSettings settings;
+
+  const Image small(32, 32);
+  Comparison result = compare(small, reference);
+  ASSERT_EQ(result.hardFailures.size(), 1u);
+  EXPECT_NE(result.hardFailures[0].find("32x32"), std::string::npos);
+
+  Image nan = noisyRender(9);
+  nan.at(5, 5).x = NAN;
+  nan.at(6, 5).y = INFINITY;
+  result = compare(nan, reference);
+  EXPECT_FALSE(result.passed(settings));
+  EXPECT_EQ(result.nonFinitePixels, 2u);
+  EXPECT_NE(result.describe(settings).find("2 pixels are NaN or infinite"), std::string::npos);
+
+  Image negative = noisyRender(10);
+  negative.at(1, 1) = Color(-0.1f);
+  result = compare(negative, reference);
+  EXPECT_NE(result.describe(settings).find("negative"), std::string::npos);
+  ComparisonInput allowed;
+  allowed.image = &negative;
+  allowed.reference = &reference.mean;
+  allowed.tileVariance = &reference.tileVariance;
+  allowed.replicates = kReplicates;
+  allowed.negativeValuesAllowed = true;  // Mitchell-Netravali can make negative pixels
+  EXPECT_TRUE(compareImages(allowed).hardFailures.empty());
+
+  allowed.droppedSamples = 3;
+  EXPECT_NE(compareImages(allowed).describe(settings).find("3 radiance samples"),
+            std::string::npos);
+}
+
+TEST(ImageComparison, NoiseFreeRegionsTolerateRoundingButNotErrors) {
+  // A constant reference with zero variance (a background): float rounding passes, 1% fails.
+  Image reference(16, 16), tileVariance(16, 16);
+  for (Color& c : reference.pixels) c = Color(0.3f);
+  Image rounded = reference, wrong = reference;
+  for (Color& c : rounded.pixels) c = Color(std::nextafter(0.3f, 1.0f));
+  for (Color& c : wrong.pixels) c = Color(0.303f);
+  ComparisonInput input;
+  input.reference = &reference;
+  input.tileVariance = &tileVariance;
+  input.replicates = kReplicates;
+  const ComparisonSettings settings;
+  input.image = &rounded;
+  EXPECT_TRUE(compareImages(input).passed(settings));
+  input.image = &wrong;
+  EXPECT_FALSE(compareImages(input).passed(settings));
+}
+
+TEST(ImageComparison, TheRendersOwnVarianceExcusesAFireflyButNotABiasEverywhere) {
+  const Reference reference = makeReference();
+  const ComparisonSettings settings;
+  // A firefly: one pixel 5 (its tile mean +0.07, 11 standard deviations), with the render's own
+  // variance estimate raised accordingly (5² for that pixel: 5² / 64² for the tile mean).
+  Image firefly = noisyRender(11);
+  firefly.at(20, 20) = Color(5.0f);
+  Image ownVariance(kSize, kSize);
+  for (Color& c : ownVariance.pixels) c = Color(float(kPixelSigma * kPixelSigma));
+  ownVariance.at(20, 20) = Color(5.0f * 5.0f);
+  ComparisonInput input;
+  input.image = &firefly;
+  input.reference = &reference.mean;
+  input.tileVariance = &reference.tileVariance;
+  input.replicates = kReplicates;
+  EXPECT_FALSE(compareImages(input).passed(settings));  // without its own variance: an outlier
+  input.imageVariance = &ownVariance;
+  EXPECT_TRUE(compareImages(input).passed(settings));
+  // An image far too bright everywhere cannot hide behind an enormous own variance: the cap
+  // (100 standard deviations) leaves each tile at t = 1.6, and the omnibus test adds them up.
+  const Image bright = noisyRender(12, 1.0);
+  for (Color& c : ownVariance.pixels) c = Color(1e6f);
+  input.image = &bright;
+  const Comparison hidden = compareImages(input);
+  EXPECT_EQ(hidden.failingTiles, 0u);
+  EXPECT_LT(hidden.omnibusP, settings.omnibusAlpha);
+  EXPECT_FALSE(hidden.passed(settings));
+}
+
+}  // namespace
+}  // namespace pathway
