@@ -2,7 +2,6 @@
 // compile, one that crashes, one that hangs, one with a missing file) each get their own result,
 // and none stops the others. Stage 2 only, to keep the test short.
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <filesystem>
@@ -19,8 +18,7 @@ namespace fs = std::filesystem;
 
 TEST(ClassGrading, EverySubmissionGetsItsOwnResult) {
   if (!test::kHaveSolutions) GTEST_SKIP() << "needs solutions/ (the reference stages)";
-  const fs::path root =
-      fs::temp_directory_path() / ("pathway_class_" + std::to_string(::getpid()));
+  const fs::path root = fs::temp_directory_path() / ("pathway_class_" + std::to_string(::getpid()));
   fs::remove_all(root);
   const fs::path submissions = root / "submissions";
   // Each submission starts as the solutions (as a student's finished files), then is changed.

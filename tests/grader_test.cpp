@@ -3,7 +3,6 @@
 // skeletons fail on their images, a stage that crashes or hangs fails only its own case, and bad
 // input gets one message and a failed result. Output: results.json and an HTML report.
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <filesystem>

@@ -3,7 +3,6 @@
 // builds the grader), and run_autograder for a correct submission, one with a planted bug, and
 // one that does not compile.
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <filesystem>
