@@ -13,6 +13,7 @@ struct Command {
 
 Command addRenderCommand(CLI::App& app);
 Command addGradeCommand(CLI::App& app);
+Command addChartCommand(CLI::App& app);
 Command addViewCommand(CLI::App& app);  // only when built with the viewer (PATHWAY_HAS_VIEWER)
 
 }  // namespace pathway

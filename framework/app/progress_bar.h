@@ -1,4 +1,5 @@
-// A one-line progress bar on stderr, shown only once a render has run for a second.
+// A one-line progress bar on stderr, shown only once a render has run for a second, and redrawn
+// at most ten times a second (a chart reports thousands of small steps).
 #pragma once
 
 #include <chrono>
@@ -14,7 +15,8 @@ class ProgressBar {
 
   void update(double fraction, const char* label) {
     const double elapsed = seconds();
-    if (!enabled_ || elapsed < 1.0) return;
+    if (!enabled_ || elapsed < 1.0 || (elapsed < lastDrawn_ + 0.1 && fraction < 1.0)) return;
+    lastDrawn_ = elapsed;
     constexpr int kWidth = 30;
     const int filled = static_cast<int>(fraction * kWidth + 0.5);
     const double eta = fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
@@ -35,6 +37,7 @@ class ProgressBar {
  private:
   bool enabled_;
   bool shown_ = false;
+  double lastDrawn_ = -1.0;  // seconds() at the last redraw
   std::chrono::steady_clock::time_point start_;
 };
 

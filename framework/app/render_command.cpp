@@ -1,5 +1,5 @@
 // `pathway render [scene] [options]`: render a scene with one integrator and write EXR and/or PNG.
-#include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -58,11 +58,7 @@ int run(const RenderOptions& options) {
   const Scene scene = loadScene(options.choices.scene, {options.choices.strictScene});
   s.width = options.width;
   s.height = options.height;
-  if (s.height == 0) {
-    const float aspect =
-        scene.camera && scene.camera->aspectRatio ? *scene.camera->aspectRatio : 1.0f;
-    s.height = std::max(1, static_cast<int>(std::lround(options.width / aspect)));
-  }
+  if (s.height == 0) s.height = scene.imageHeight(options.width);
   const RayTracer tracer(scene);
 
   ProgressBar progress(!options.quiet);

@@ -1,5 +1,6 @@
 #include "scene/scene.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pathway {
@@ -73,6 +74,11 @@ size_t Scene::triangleCount() const {
   size_t count = 0;
   for (const Mesh& mesh : meshes) count += mesh.triangleCount();
   return count;
+}
+
+int Scene::imageHeight(int width) const {
+  const float aspect = camera && camera->aspectRatio ? *camera->aspectRatio : 1.0f;
+  return std::max(1, static_cast<int>(std::lround(width / aspect)));
 }
 
 }  // namespace pathway

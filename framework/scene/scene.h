@@ -76,6 +76,8 @@ struct Scene {
   std::vector<std::string> warnings;  // one per unsupported feature, already printed
 
   size_t triangleCount() const;
+  // The image height that goes with `width`: from the camera's aspect ratio, square without one.
+  int imageHeight(int width) const;
   // A hash of everything that changes an image (geometry, materials, textures, camera,
   // background), not of the file's formatting: renders record it so that images made from
   // different scenes are never compared or merged.

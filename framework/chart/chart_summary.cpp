@@ -1,0 +1,310 @@
+#include "chart/chart_summary.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <sstream>
+
+#include "core/text_output.h"
+
+namespace pathway {
+namespace {
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// The fit over the upper half of the spp exponents: the asymptotic rate, not the start-up.
+std::optional<LogLogFit> fitLine(const std::vector<ChartPoint>& points,
+                                 const std::function<double(const ChartPoint&)>& x,
+                                 const std::function<std::optional<double>(const ChartPoint&)>& y) {
+  if (points.empty()) return std::nullopt;
+  const uint32_t maxSpp = points.back().spp;
+  const int k = static_cast<int>(std::lround(std::log2(double(maxSpp))));
+  const uint32_t fromSpp = 1u << ((k + 1) / 2);
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  int n = 0;
+  for (const ChartPoint& p : points) {
+    if (p.spp < fromSpp || !y(p) || !(*y(p) > 0.0) || !(x(p) > 0.0)) continue;
+    const double lx = std::log(x(p)), ly = std::log(*y(p));
+    sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly, ++n;
+  }
+  const double denominator = n * sxx - sx * sx;
+  if (n < 2 || !(std::abs(denominator) > 1e-12)) return std::nullopt;
+  LogLogFit fit;
+  fit.slope = (n * sxy - sx * sy) / denominator;
+  fit.intercept = (sy - fit.slope * sx) / n;
+  fit.fromSpp = fromSpp;
+  fit.toSpp = maxSpp;
+  return fit;
+}
+
+// y at `at` along the measured points (x ascending by spp), else from the fit.
+std::optional<ReadOff> readOff(const std::vector<ChartPoint>& points, double at,
+                               const std::function<double(const ChartPoint&)>& x,
+                               const std::function<std::optional<double>(const ChartPoint&)>& y,
+                               const std::optional<LogLogFit>& fit) {
+  for (size_t i = 0; i + 1 < points.size(); ++i) {
+    const double x0 = x(points[i]), x1 = x(points[i + 1]);
+    const auto y0 = y(points[i]), y1 = y(points[i + 1]);
+    if (!y0 || !y1 || !(*y0 > 0.0) || !(*y1 > 0.0) || !(x0 > 0.0) || !(x1 > x0)) continue;
+    if (at < x0 || at > x1) continue;
+    const double t = std::log(at / x0) / std::log(x1 / x0);
+    return ReadOff{std::exp((1 - t) * std::log(*y0) + t * std::log(*y1)), false};
+  }
+  if (points.size() == 1 && x(points[0]) == at && y(points[0])) return ReadOff{*y(points[0])};
+  if (!fit) return std::nullopt;
+  return ReadOff{fit->at(at), true};
+}
+
+std::string number(double value) {
+  if (!std::isfinite(value)) return "null";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", value);
+  return text;
+}
+// Three significant digits, for tables people read.
+std::string brief(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+std::string number(const std::optional<double>& value) {
+  return value ? number(*value) : "null";
+}
+std::string readOffJson(const std::optional<ReadOff>& value) {
+  if (!value) return "null";
+  return "{\"value\": " + number(value->value) +
+         ", \"extrapolated\": " + (value->extrapolated ? "true" : "false") + "}";
+}
+std::string fitJson(const std::optional<LogLogFit>& fit) {
+  if (!fit) return "null";
+  return "{\"slope\": " + number(fit->slope) + ", \"intercept\": " + number(fit->intercept) +
+         ", \"from_spp\": " + std::to_string(fit->fromSpp) +
+         ", \"to_spp\": " + std::to_string(fit->toSpp) + "}";
+}
+
+}  // namespace
+
+double LogLogFit::at(double x) const {
+  return std::exp(intercept + slope * std::log(x));
+}
+
+ChartSummary summarizeChart(const ChartSpec& spec, const ChartData& data) {
+  ChartSummary summary;
+  summary.machine = data.machine;
+  for (size_t c = 0; c < spec.configs.size(); ++c) {
+    const ChartConfig& config = spec.configs[c];
+    ChartLine line;
+    line.config = &config;
+    line.description = data.descriptions.at(c);
+    for (const ChartReference& reference : data.references)
+      if (reference.label == config.label) line.reference = &reference;
+    double rays = 0.0, samples = 0.0;
+    for (uint32_t spp = 1; spp <= spec.maxSppOf(config); spp *= 2) {
+      std::vector<double> seconds, rayCounts, relMse, mse;
+      for (const ChartRun& run : data.runs) {
+        if (run.label != config.label || run.spp != spp) continue;
+        seconds.push_back(run.seconds);
+        rayCounts.push_back(double(run.counters.totalRays()));
+        rays += double(run.counters.totalRays());
+        samples += double(run.counters.samples);
+        if (run.error) {
+          relMse.push_back(run.error->relMse);
+          mse.push_back(run.error->mse);
+        }
+      }
+      if (seconds.empty()) continue;
+      ChartPoint point;
+      point.spp = spp;
+      point.renders = static_cast<int>(seconds.size());
+      point.seconds = median(seconds);
+      point.secondsLow = *std::min_element(seconds.begin(), seconds.end());
+      point.secondsHigh = *std::max_element(seconds.begin(), seconds.end());
+      point.rays = median(rayCounts);
+      if (!relMse.empty()) {
+        point.relMse = median(relMse);
+        point.relMseLow = *std::min_element(relMse.begin(), relMse.end());
+        point.relMseHigh = *std::max_element(relMse.begin(), relMse.end());
+        point.mse = median(mse);
+        if (point.seconds > 0.0) point.efficiency = 1.0 / (*point.relMse * point.seconds);
+      }
+      line.points.push_back(point);
+    }
+    line.raysPerSample = samples > 0.0 ? rays / samples : 0.0;
+    auto bySpp = [](const ChartPoint& p) { return double(p.spp); };
+    auto bySeconds = [](const ChartPoint& p) { return p.seconds; };
+    auto relMseOf = [](const ChartPoint& p) { return p.relMse; };
+    auto mseOf = [](const ChartPoint& p) { return p.mse; };
+    line.relMseBySpp = fitLine(line.points, bySpp, relMseOf);
+    line.relMseBySeconds = fitLine(line.points, bySeconds, relMseOf);
+    line.mseBySeconds = fitLine(line.points, bySeconds, mseOf);
+    // Time to the target: where the measured line crosses it, else along the fit.
+    for (size_t i = 0; i + 1 < line.points.size() && !line.secondsToTarget; ++i) {
+      const ChartPoint &a = line.points[i], &b = line.points[i + 1];
+      if (!a.relMse || !b.relMse || !(*a.relMse >= kTargetRelMse && *b.relMse <= kTargetRelMse))
+        continue;
+      if (*a.relMse == *b.relMse || !(a.seconds > 0.0 && b.seconds > 0.0)) continue;
+      const double t = std::log(*a.relMse / kTargetRelMse) / std::log(*a.relMse / *b.relMse);
+      line.secondsToTarget =
+          ReadOff{std::exp((1 - t) * std::log(a.seconds) + t * std::log(b.seconds)), false};
+    }
+    if (!line.secondsToTarget && line.relMseBySeconds && line.relMseBySeconds->slope < 0.0) {
+      const LogLogFit& fit = *line.relMseBySeconds;
+      line.secondsToTarget =
+          ReadOff{std::exp((std::log(kTargetRelMse) - fit.intercept) / fit.slope), true};
+    }
+    summary.lines.push_back(std::move(line));
+  }
+
+  // Equal time and equal rays: the most that every line reached.
+  if (!spec.withReference || summary.lines.empty()) return summary;
+  summary.equalSeconds = summary.equalRays = INFINITY;
+  for (const ChartLine& line : summary.lines) {
+    if (line.points.empty()) continue;
+    summary.equalSeconds = std::min(summary.equalSeconds, line.points.back().seconds);
+    summary.equalRays = std::min(summary.equalRays, line.points.back().rays);
+  }
+  auto bySeconds = [](const ChartPoint& p) { return p.seconds; };
+  auto byRays = [](const ChartPoint& p) { return p.rays; };
+  auto relMseOf = [](const ChartPoint& p) { return p.relMse; };
+  auto rmseOf = [](const ChartPoint& p) -> std::optional<double> {
+    return p.mse ? std::optional<double>(std::sqrt(*p.mse)) : std::nullopt;
+  };
+  for (const ChartLine& line : summary.lines) {
+    std::optional<LogLogFit> rmseFit;
+    if (line.mseBySeconds) {  // √ of a power law is a power law with half the slope
+      rmseFit = line.mseBySeconds;
+      rmseFit->slope *= 0.5;
+      rmseFit->intercept *= 0.5;
+    }
+    const std::optional<LogLogFit> raysFit = fitLine(line.points, byRays, relMseOf);
+    const std::optional<LogLogFit> rmseRaysFit = fitLine(line.points, byRays, rmseOf);
+    summary.relMseAtEqualSeconds.push_back(
+        readOff(line.points, summary.equalSeconds, bySeconds, relMseOf, line.relMseBySeconds)
+            .value_or(ReadOff{NAN, true}));
+    summary.rmseAtEqualSeconds.push_back(
+        readOff(line.points, summary.equalSeconds, bySeconds, rmseOf, rmseFit)
+            .value_or(ReadOff{NAN, true}));
+    summary.relMseAtEqualRays.push_back(
+        readOff(line.points, summary.equalRays, byRays, relMseOf, raysFit)
+            .value_or(ReadOff{NAN, true}));
+    summary.rmseAtEqualRays.push_back(
+        readOff(line.points, summary.equalRays, byRays, rmseOf, rmseRaysFit)
+            .value_or(ReadOff{NAN, true}));
+  }
+  return summary;
+}
+
+std::string summaryJson(const ChartSpec& spec, const ChartSummary& summary) {
+  std::ostringstream out;
+  out << "{\n  \"title\": " << jsonString(spec.title)
+      << ",\n  \"machine\": " << jsonString(summary.machine)
+      << ",\n  \"target_rel_mse\": " << number(kTargetRelMse)
+      << ",\n  \"rel_mse_epsilon\": " << number(kRelMseEpsilon) << ",\n  \"seeds\": " << spec.seeds
+      << ",\n  \"with_reference\": " << (spec.withReference ? "true" : "false")
+      << ",\n  \"equal_seconds\": " << number(summary.equalSeconds)
+      << ",\n  \"equal_rays\": " << number(summary.equalRays) << ",\n  \"lines\": [";
+  for (size_t i = 0; i < summary.lines.size(); ++i) {
+    const ChartLine& line = summary.lines[i];
+    const ChartConfig& config = *line.config;
+    out << (i ? "," : "") << "\n    {\"label\": " << jsonString(config.label)
+        << ", \"integrator\": " << jsonString(config.choices.integrator)
+        << ", \"description\": " << jsonString(line.description)
+        << ", \"group\": " << jsonString(config.group) << ", \"x\": " << number(config.x)
+        << ",\n     \"reference\": ";
+    if (line.reference)
+      out << "{\"label\": " << jsonString(spec.referenceConfigOf(config).label)
+          << ", \"spp\": " << line.reference->spp
+          << ", \"exr\": " << jsonString(line.reference->exrPath)
+          << ", \"png\": " << jsonString(line.reference->pngPath) << "}";
+    else
+      out << "null";
+    out << ",\n     \"rays_per_sample\": " << number(line.raysPerSample)
+        << ", \"fit_rel_mse_by_spp\": " << fitJson(line.relMseBySpp)
+        << ",\n     \"fit_rel_mse_by_seconds\": " << fitJson(line.relMseBySeconds)
+        << ", \"fit_mse_by_seconds\": " << fitJson(line.mseBySeconds)
+        << ",\n     \"seconds_to_target\": " << readOffJson(line.secondsToTarget);
+    if (!summary.relMseAtEqualSeconds.empty())
+      out << ",\n     \"rel_mse_at_equal_seconds\": "
+          << readOffJson(summary.relMseAtEqualSeconds[i])
+          << ", \"rmse_at_equal_seconds\": " << readOffJson(summary.rmseAtEqualSeconds[i])
+          << ", \"rel_mse_at_equal_rays\": " << readOffJson(summary.relMseAtEqualRays[i])
+          << ", \"rmse_at_equal_rays\": " << readOffJson(summary.rmseAtEqualRays[i]);
+    out << ",\n     \"points\": [";
+    for (size_t j = 0; j < line.points.size(); ++j) {
+      const ChartPoint& p = line.points[j];
+      out << (j ? "," : "") << "\n      {\"spp\": " << p.spp << ", \"renders\": " << p.renders
+          << ", \"seconds\": " << number(p.seconds) << ", \"seconds_low\": " << number(p.secondsLow)
+          << ", \"seconds_high\": " << number(p.secondsHigh) << ", \"rays\": " << number(p.rays)
+          << ", \"rel_mse\": " << number(p.relMse) << ", \"rel_mse_low\": " << number(p.relMseLow)
+          << ", \"rel_mse_high\": " << number(p.relMseHigh) << ", \"mse\": " << number(p.mse)
+          << ", \"efficiency\": " << number(p.efficiency) << "}";
+    }
+    out << "]}";
+  }
+  out << "\n  ]\n}\n";
+  return out.str();
+}
+
+std::string summaryCsv(const ChartSummary& summary) {
+  std::ostringstream out;
+  out << "label,spp,renders,seconds_median,seconds_min,seconds_max,rays_median,rel_mse_median,"
+         "rel_mse_min,rel_mse_max,rmse_median,efficiency\n";
+  for (const ChartLine& line : summary.lines) {
+    for (const ChartPoint& p : line.points) {
+      std::string label = line.config->label;
+      if (label.find_first_of(",\"") != std::string::npos) {
+        std::string quoted = "\"";
+        for (char c : label) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+        label = quoted + "\"";
+      }
+      const auto blank = [](const std::string& s) { return s == "null" ? std::string() : s; };
+      out << label << "," << p.spp << "," << p.renders << "," << number(p.seconds) << ","
+          << number(p.secondsLow) << "," << number(p.secondsHigh) << "," << number(p.rays) << ","
+          << blank(number(p.relMse)) << "," << blank(number(p.relMseLow)) << ","
+          << blank(number(p.relMseHigh)) << "," << blank(p.mse ? number(std::sqrt(*p.mse)) : "null")
+          << "," << blank(number(p.efficiency)) << "\n";
+    }
+  }
+  return out.str();
+}
+
+std::string summaryMarkdown(const ChartSummary& summary) {
+  std::ostringstream out;
+  out << "Measured on " << summary.machine << ". relMSE = mean (x − r)² / (r² + " << kRelMseEpsilon
+      << "); medians over seeds.\n\n";
+  out << "| configuration | rays/sample | slope vs spp | slope vs s | relMSE at max spp | s at max "
+         "spp | efficiency 1/(relMSE·s) | s to relMSE "
+      << brief(kTargetRelMse) << " |";
+  const bool equal = !summary.relMseAtEqualSeconds.empty();
+  if (equal)
+    out << " relMSE at " << brief(summary.equalSeconds) << " s | RMSE at "
+        << brief(summary.equalSeconds) << " s |";
+  out << "\n|---|---|---|---|---|---|---|---|" << (equal ? "---|---|" : "") << "\n";
+  auto readOffText = [](const std::optional<ReadOff>& value) {
+    if (!value || !std::isfinite(value->value)) return std::string("–");
+    return brief(value->value) + (value->extrapolated ? " (extrapolated)" : "");
+  };
+  for (size_t i = 0; i < summary.lines.size(); ++i) {
+    const ChartLine& line = summary.lines[i];
+    const ChartPoint* last = line.points.empty() ? nullptr : &line.points.back();
+    out << "| " << line.config->label << " | " << brief(line.raysPerSample) << " | "
+        << (line.relMseBySpp ? brief(line.relMseBySpp->slope) : "–") << " | "
+        << (line.relMseBySeconds ? brief(line.relMseBySeconds->slope) : "–") << " | "
+        << (last && last->relMse ? brief(*last->relMse) : "–") << " | "
+        << (last ? brief(last->seconds) : "–") << " | "
+        << (last && last->efficiency ? brief(*last->efficiency) : "–") << " | "
+        << readOffText(line.secondsToTarget) << " |";
+    if (equal)
+      out << " " << readOffText(summary.relMseAtEqualSeconds[i]) << " | "
+          << readOffText(summary.rmseAtEqualSeconds[i]) << " |";
+    out << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace pathway
