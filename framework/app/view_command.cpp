@@ -20,6 +20,7 @@ Command addViewCommand(CLI::App& app) {
       "  pathway view -i stage5@ref -p nee=on --split stage5@ref --split-param nee=off --balance "
       "rays\n"
       "  pathway view --headless --frames 60 --screenshot ui.png   (no display needed)\n"
+      "  pathway view -i stage5@ref --width 512 --height 512 --reference ref.exr   error plot\n"
       "  pathway view --benchmark                        progressive fps, time to first image\n"
       "Press H in the viewer for the keys and mouse.");
   addSharedOptions(*view, options->choices);
@@ -56,6 +57,12 @@ Command addViewCommand(CLI::App& app) {
                    "After the last frame, write the whole window (panel included) to this PNG");
   view->add_flag("--grade", options->grade,
                  "Grade the left pane against the reference once its first image is in (key G)");
+  view->add_option("--reference", options->reference,
+                   "An EXR of the scene's camera view at the render size (--width/--height): the "
+                   "error plot measures relMSE against it");
+  addSettingOption(*view, setting::kReferenceSamplesPerPixel, options->referenceSpp);
+  view->add_flag("--make-reference", options->makeReference,
+                 "Make the error plot's reference once the first image is in (key M)");
   view->add_flag("--benchmark", options->benchmark,
                  "Measure progressive frames per second and time to first image (headless)");
   view->add_option("--benchmark-seconds", options->benchmarkSeconds,

@@ -34,6 +34,11 @@ inline constexpr SettingSpec<uint32_t> kSamplesPerPixel{"spp", 16, 1, 1u << 20,
 inline constexpr SettingSpec<uint32_t> kViewerSamplesPerPixel{
     "spp", 4096, kSamplesPerPixel.minValue, kSamplesPerPixel.maxValue,
     "Samples per pixel at which rendering stops"};
+// The viewer's "Make reference" (error plot): well beyond what the panes reach in a few seconds,
+// so the reference's own noise stays below their error for most of the curve.
+inline constexpr SettingSpec<uint32_t> kReferenceSamplesPerPixel{
+    "reference-spp", 1024, 16, kSamplesPerPixel.maxValue,
+    "Samples per pixel of the reference the viewer makes on demand (Make reference, key M)"};
 inline constexpr SettingSpec<uint32_t> kSamplesPerPass{
     "spp-per-pass", 1, 1, kSamplesPerPixel.maxValue,
     "Samples added to every pixel per pass (the viewer shows an image after each)"};

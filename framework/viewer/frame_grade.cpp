@@ -6,7 +6,7 @@
 
 #include "core/error.h"
 #include "grade/grade_report.h"
-#include "render/render_session.h"
+#include "viewer/stage_reference.h"
 
 namespace pathway {
 namespace {
@@ -16,11 +16,8 @@ constexpr uint32_t kMinimumSpp = 4;
 }  // namespace
 
 bool canGradeFrame(const LaneFrame& frame) {
-  if (!frame.error.empty() || frame.images.color.pixels.empty()) return false;
-  const IntegratorInfo* info = nullptr;
-  for (const IntegratorInfo* candidate : allIntegrators())
-    if (candidate->name == frame.integrator) info = candidate;
-  return info && info->stage > 0 && findStageIntegrator(info->stage, Variant::Reference);
+  return frame.error.empty() && !frame.images.color.pixels.empty() &&
+         stageReferenceOf(frame.integrator);
 }
 
 FrameGrade gradeFrame(const LaneFrame& frame, const LoadedScene& scene) {
@@ -29,29 +26,15 @@ FrameGrade gradeFrame(const LaneFrame& frame, const LoadedScene& scene) {
   grade.spp = frame.stats.samplesPerPixel;
   grade.integrator = frame.integrator;
   try {
-    const IntegratorInfo& shown = findIntegrator(frame.integrator);
-    const IntegratorInfo* reference = findStageIntegrator(shown.stage, Variant::Reference);
-    if (shown.stage == 0 || !reference)
+    const IntegratorInfo* reference = stageReferenceOf(frame.integrator);
+    if (!reference)
       throw PathwayError("no reference of " + frame.integrator + " is built into this program");
     if (frame.stats.samplesPerPixel < kMinimumSpp)
       throw PathwayError("grading needs at least " + std::to_string(kMinimumSpp) +
                          " samples per pixel (each pixel's own variance estimate)");
     grade.reference = reference->name;
-    RenderRecipe recipe;
-    recipe.integrator = reference->name;
-    recipe.params = frame.params;  // the stage's parameters are declared once, for both
-    recipe.settings = frame.settings;
-    recipe.settings.samplesPerPixel = std::max(frame.stats.samplesPerPixel, 16u);
-    recipe.settings.samplesPerPass = recipe.settings.samplesPerPixel;
-    recipe.settings.seed = frame.settings.seed + 7919;  // independent of the shown image
-    const CameraPose& pose = frame.camera;
-    const Camera camera(pose.position, pose.lookAt, pose.up, pose.yfov, recipe.settings.width,
-                        recipe.settings.height);
-    // A session of its own, without runRender's clearing of the TODO log, which the render
-    // worker is reading for the shown pane at the same time.
-    RenderSession session(*scene.tracer, camera, recipe);
-    session.renderer().renderAll();
-    const RenderResult result = session.develop({});
+    const uint32_t spp = std::max(frame.stats.samplesPerPixel, 16u);
+    const RenderResult result = *renderStageReference(frame, scene, spp, spp);
 
     ComparisonInput input;
     input.image = &frame.images.color;

@@ -17,16 +17,6 @@ namespace {
 const ImVec4 kErrorColor(1.0f, 0.35f, 0.35f, 1.0f);
 const ImVec4 kGoodColor(0.45f, 0.9f, 0.45f, 1.0f);
 
-void tooltip(const std::string& text) {
-  if (!text.empty() && ImGui::IsItemHovered()) {
-    ImGui::BeginTooltip();
-    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
-    ImGui::TextUnformatted(text.c_str());
-    ImGui::PopTextWrapPos();
-    ImGui::EndTooltip();
-  }
-}
-
 std::string integratorLabel(const IntegratorInfo& info) {
   return info.name + (info.variant == Variant::Student ? "   (yours)" : "   (reference)");
 }
@@ -237,6 +227,16 @@ void splitWidgets(ViewerState& state) {
 
 }  // namespace
 
+void tooltip(const std::string& text) {
+  if (!text.empty() && ImGui::IsItemHovered()) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
+    ImGui::TextUnformatted(text.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
+}
+
 PanelAction drawPanel(ViewerState& state, PanelText& text, const PanelStatus& status) {
   PanelAction action = PanelAction::None;
   const ImGuiIO& io = ImGui::GetIO();
@@ -290,6 +290,10 @@ PanelAction drawPanel(ViewerState& state, PanelText& text, const PanelStatus& st
       integratorWidgets(state, 0);
     }
   }
+  // Above the counters, which the panes' captions repeat: in a 720-pixel window the plot shows.
+  if (ImGui::CollapsingHeader("Error against a reference", ImGuiTreeNodeFlags_DefaultOpen) &&
+      errorPlotWidgets(state, status))
+    action = PanelAction::MakeReference;
   if (ImGui::CollapsingHeader("Counters", ImGuiTreeNodeFlags_DefaultOpen)) {
     ImGui::Checkbox("paused (Space)", &state.paused);
     counterWidgets(state, status);

@@ -24,6 +24,7 @@ const Shortcut kShortcuts[] = {
     {"1 ... 5", "stage 1 ... 5 (Shift: right pane)"},
     {"D", "display: colour, variance, rays per sample"},
     {"G", "grade the image against the reference; shows where it differs (again: hide)"},
+    {"M", "make a reference for the error plot (relMSE against time); again: cancel"},
     {"+ / -", "exposure up / down one stop"},
     {"V", "split view on / off"},
     {"B", "split view: equal time / equal ray count"},
@@ -62,6 +63,7 @@ ShortcutEffects handleShortcuts(ViewerState& state) {
   if (pressed(GLFW_KEY_SPACE)) state.paused = !state.paused;
   if (pressed(GLFW_KEY_F12)) effects.screenshot = true;
   if (pressed(GLFW_KEY_G)) effects.grade = true;
+  if (pressed(GLFW_KEY_M)) effects.makeReference = true;
   return effects;
 }
 

@@ -8,7 +8,8 @@ namespace pathway {
 struct ShortcutEffects {
   bool resetCamera = false;
   bool screenshot = false;
-  bool grade = false;  // grade the left pane's image against the reference (again: hide it)
+  bool grade = false;          // grade the left pane's image against the reference (again: hide it)
+  bool makeReference = false;  // make the error plot's reference (again: cancel it)
 };
 
 // Applies the keys pressed this frame (unless a text field has the keyboard).

@@ -145,6 +145,34 @@ void Viewer::pollGrade() {
   if (!grade_->heatmap.pixels.empty()) gradeTexture_->upload(displayImageOf(grade_->heatmap));
 }
 
+void Viewer::setReference(ReferenceImage reference) {
+  reference_ = std::move(reference);
+  for (ErrorHistory& history : errors_) history.clear();
+  submitted_.reset();  // the same job again, as a new one: measured from its first pass
+}
+
+void Viewer::toggleMakeReference() {
+  if (maker_.running()) {
+    maker_.cancel();
+    return;
+  }
+  const std::shared_ptr<const LaneFrame> frame = worker_->frame(0);  // the view the panes show
+  if (frame && scene_) maker_.start(frame, scene_, state_.referenceSpp);
+}
+
+// Measures each pane's new image against the reference, on the UI thread: imageError takes less
+// than making the display image of the same frame (measured: 0.6 ms against 1.8 ms at 512 x 512,
+// 9 ms against 12 ms at 1540 x 1000).
+void Viewer::updateErrors() {
+  if (std::optional<ReferenceImage> made = maker_.take()) setReference(std::move(*made));
+  if (!reference_) return;
+  for (int lane = 0; lane < (state_.split ? 2 : 1); ++lane) {
+    if (!shown_[lane] || shown_[lane] == measured_[lane]) continue;
+    measured_[lane] = shown_[lane];
+    errors_[lane].add(*shown_[lane], *reference_);
+  }
+}
+
 void Viewer::saveImages(const std::string& extension) {
   text_.saveFailed = false;
   text_.saveMessage.clear();
@@ -181,15 +209,24 @@ void Viewer::frame(const std::string& screenshotPath) {
   const ShortcutEffects keys = handleShortcuts(state_);
   if (keys.resetCamera) camera_.reset();
   if (keys.grade) toggleGrade();
+  if (keys.makeReference) toggleMakeReference();
   pollGrade();
   if (keys.screenshot) pendingScreenshot_ = text_.savePrefix + "_screenshot.png";
 
   updateTextures();  // before the panel, so panel and panes show the same image
+  updateErrors();
   PanelStatus status;
   for (int lane = 0; lane < 2; ++lane) {
     status.frames[lane] = shown_[lane];
     status.scaleMax[lane] = scaleMax_[lane];
+    status.errors[lane] = &errors_[lane];
   }
+  status.reference.source = reference_ ? reference_->source : "";
+  status.reference.making = maker_.running();
+  status.reference.makingIntegrator = maker_.integrator();
+  status.reference.sppDone = maker_.sppDone();
+  status.reference.sppTarget = maker_.sppTarget();
+  status.reference.error = maker_.error();
   status.idle = worker_->idle();
   status.passSeconds = worker_->passSeconds();
   status.uiFramesPerSecond = fps_;
@@ -220,6 +257,9 @@ void Viewer::frame(const std::string& screenshotPath) {
       break;
     case PanelAction::Grade:
       toggleGrade();
+      break;
+    case PanelAction::MakeReference:
+      toggleMakeReference();
       break;
     case PanelAction::None:
       break;

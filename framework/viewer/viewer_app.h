@@ -10,11 +10,14 @@
 #include <vector>
 
 #include "render/render_choices.h"
+#include "viewer/error_plot.h"
 #include "viewer/frame_grade.h"
 #include "viewer/gl_display.h"
 #include "viewer/image_view.h"
 #include "viewer/panel.h"
 #include "viewer/platform.h"
+#include "viewer/reference_image.h"
+#include "viewer/reference_maker.h"
 #include "viewer/render_worker.h"
 #include "viewer/viewer_state.h"
 
@@ -36,6 +39,9 @@ struct ViewerOptions {
   int frames = 0;          // > 0: draw this many frames, then exit
   std::string screenshot;  // written after the last frame
   bool grade = false;      // headless: grade the left pane once its first image is in (key G)
+  std::string reference;   // an EXR the error plot measures the panes against
+  uint32_t referenceSpp = setting::kReferenceSamplesPerPixel.defaultValue;
+  bool makeReference = false;  // headless: make the reference once the first image is in (key M)
   bool benchmark = false;
   double benchmarkSeconds = 3.0;
 };
@@ -63,6 +69,13 @@ class Viewer {
   // True while a grade is being made.
   bool grading() const { return grading_.valid(); }
   uint64_t imagesShown() const { return imagesShown_; }
+  // The error plot's reference (from --reference); the panes start over to be measured from 1 spp.
+  void setReference(ReferenceImage reference);
+  // Makes the left pane's reference in the background (M); again while it renders: cancels it.
+  void toggleMakeReference();
+  bool makingReference() const { return maker_.running(); }
+  bool hasReference() const { return reference_.has_value(); }
+  const ErrorHistory& errors(int lane) const { return errors_[lane]; }
 
  private:
   void pollSceneLoad();
@@ -70,6 +83,7 @@ class Viewer {
   void updateTextures();
   void saveImages(const std::string& extension);
   void pollGrade();
+  void updateErrors();
   void noteInput();
 
   std::unique_ptr<Platform> platform_;
@@ -83,6 +97,10 @@ class Viewer {
   std::unique_ptr<GlTexture> gradeTexture_;
   std::future<FrameGrade> grading_;
   std::optional<FrameGrade> grade_;  // shown while its frame's job is the left pane's
+  ReferenceMaker maker_;
+  std::optional<ReferenceImage> reference_;
+  ErrorHistory errors_[2];
+  std::shared_ptr<const LaneFrame> measured_[2];  // the newest image each history has seen
   std::shared_ptr<const LaneFrame> shown_[2];
   DisplayMode shownMode_[2] = {DisplayMode::Color, DisplayMode::Color};
   float shownExposure_[2] = {0.0f, 0.0f};

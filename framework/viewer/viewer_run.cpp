@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 
 #include "core/error.h"
 #include "render/integrator_registry.h"
@@ -66,6 +67,7 @@ ViewerState initialState(const ViewerOptions& options) {
     state.display = DisplayMode::RayHeatmap;
   else
     throw PathwayError("unknown display '" + options.display + "' (color, variance or rays)");
+  state.referenceSpp = options.referenceSpp;
   state.showHelp = options.showHelp;
   state.strictScene = options.choices.strictScene;
   state.fixedWidth = options.width;
@@ -87,10 +89,18 @@ int runViewer(const ViewerOptions& options) {
     else
       state.fixedWidth = std::max(1, static_cast<int>(std::lround(state.fixedHeight * aspect)));
   }
+  std::optional<ReferenceImage> reference;
+  if (!options.reference.empty()) {
+    // A file holds no camera: it is taken to show the scene's own, where the viewer starts.
+    const ReferenceView view{scene->scene.sourcePath, OrbitCamera(scene->scene).pose(),
+                             state.settings.filter, state.settings.filterRadiusPixels()};
+    reference = loadReference(options.reference, view);  // a bad file fails before any window
+  }
   std::unique_ptr<Platform> platform =
       options.headless ? createOsmesaPlatform(options.windowWidth, options.windowHeight)
                        : createGlfwPlatform(options.windowWidth, options.windowHeight, "Pathway");
   Viewer viewer(std::move(platform), std::move(state), std::move(scene));
+  if (reference) viewer.setReference(std::move(*reference));
 
   const std::string screenshot = !options.screenshot.empty()
                                      ? options.screenshot
@@ -100,12 +110,18 @@ int runViewer(const ViewerOptions& options) {
   // this long) until every pane has its first image.
   constexpr double kFirstImageTimeout = 30.0;
   double deadline = 0.0;
-  bool gradeAsked = false;
+  bool gradeAsked = false, referenceAsked = false;
   for (int drawn = 0; !viewer.shouldClose(); ++drawn) {
     if (options.grade && !gradeAsked && viewer.panesCurrent()) {
       viewer.toggleGrade();
       gradeAsked = true;
     }
+    if (options.makeReference && !referenceAsked && viewer.panesCurrent()) {
+      viewer.toggleMakeReference();
+      referenceAsked = true;
+    }
+    // The frames asked for count once the reference is in (the panes then start over).
+    if (options.makeReference && (!referenceAsked || viewer.makingReference())) drawn = 0;
     const bool enough = frames > 0 && drawn + 1 >= frames;
     if (enough && deadline == 0.0) deadline = now() + kFirstImageTimeout;
     const bool gradeShown = !options.grade || (gradeAsked && !viewer.grading());
@@ -115,6 +131,22 @@ int runViewer(const ViewerOptions& options) {
     viewer.waitForChange();
   }
   if (!screenshot.empty() && frames > 0) std::printf("wrote %s\n", screenshot.c_str());
+  if (frames > 0 && viewer.hasReference()) {  // what the plot ended at, for scripts and tests
+    const int lanes = options.splitIntegrator.empty() ? 1 : 2;
+    for (int lane = 0; lane < lanes; ++lane) {
+      const ErrorHistory& history = viewer.errors(lane);
+      const char* pane = lanes == 1 ? "" : lane == 0 ? "left " : "right ";
+      if (!history.points().empty()) {
+        const ErrorPoint& last = history.points().back();
+        std::printf("error plot, %s%s: relMSE %.4g at %u spp, %.3f s (%zu points)\n", pane,
+                    history.integrator().c_str(), last.relMse, last.spp, last.seconds,
+                    history.points().size());
+      } else {
+        std::printf("error plot, %s%s: not measured%s%s\n", pane, history.integrator().c_str(),
+                    history.message().empty() ? "" : ": ", history.message().c_str());
+      }
+    }
+  }
   return 0;
 }
 

@@ -41,6 +41,8 @@ struct ViewerState {
   float budgetSeconds = 0.0f;   // equal time: per pane; 0: up to the spp target
   float budgetMegaRays = 0.0f;  // equal rays: per pane, in millions; 0: up to the spp target
 
+  uint32_t referenceSpp = setting::kReferenceSamplesPerPixel.defaultValue;  // Make reference
+
   bool paused = false;
   bool showHelp = false;
   bool strictScene = false;  // scenes opened from the panel: refuse required lamps (--strict)

@@ -1,0 +1,108 @@
+#include "viewer/reference_image.h"
+
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+
+#include "core/error.h"
+#include "io/image_io.h"
+
+namespace pathway {
+namespace {
+
+std::string sizeText(int width, int height) {
+  return std::to_string(width) + " x " + std::to_string(height);
+}
+
+std::string radiusText(float radius) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2g", radius);
+  return text;
+}
+
+}  // namespace
+
+ReferenceView viewOf(const LaneFrame& frame) {
+  return {frame.scenePath, frame.camera, frame.settings.filter,
+          frame.settings.filterRadiusPixels()};
+}
+
+ReferenceImage loadReference(const std::string& path, const ReferenceView& view) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension != ".exr")
+    throw PathwayError(path +
+                       ": a reference must be an EXR file (linear radiance, as pathway "
+                       "render writes it)");
+  if (!std::filesystem::is_regular_file(path))
+    throw PathwayError(path + ": no such reference file");
+  LoadedImage loaded = readImageFile(path);  // names the file when it cannot read it
+  ReferenceImage reference;
+  reference.image = std::move(loaded.images.color);
+  for (const Color& pixel : reference.image.pixels)
+    if (!std::isfinite(pixel.x) || !std::isfinite(pixel.y) || !std::isfinite(pixel.z))
+      throw PathwayError(path + ": the reference has non-finite pixel values");
+  reference.source = path;
+  const auto integrator = loaded.metadata.find("pathway:integrator");
+  const auto spp = loaded.metadata.find("pathway:spp");
+  if (integrator != loaded.metadata.end() && spp != loaded.metadata.end())
+    reference.source += " (" + integrator->second + ", " + spp->second + " spp)";
+  reference.fromFile = true;
+  reference.view = view;
+  // A file from `pathway render` says which filter and random numbers made it.
+  const auto& metadata = loaded.metadata;
+  const auto filter = metadata.find("pathway:filter");
+  const auto radius = metadata.find("pathway:filterRadius");
+  const auto seed = metadata.find("pathway:seed");
+  const auto sampler = metadata.find("pathway:sampler");
+  try {
+    if (filter != metadata.end() && radius != metadata.end()) {
+      reference.view.filter = parseFilterType(filter->second);
+      reference.view.filterRadius = std::stof(radius->second);
+    }
+    if (seed != metadata.end()) reference.seed = std::stoull(seed->second);
+    if (sampler != metadata.end()) reference.sampler = parseSamplerType(sampler->second);
+  } catch (const std::exception& error) {
+    throw PathwayError(path + ": unreadable pathway metadata: " + error.what());
+  }
+  return reference;
+}
+
+std::string referenceProblem(const ReferenceImage& reference, const LaneFrame& frame) {
+  const Image& image = frame.images.color;
+  const Image& expected = reference.image;
+  const bool sameSize = image.width == expected.width && image.height == expected.height;
+  if (reference.fromFile && !sameSize)
+    return "the reference is " + sizeText(expected.width, expected.height) +
+           " pixels but the pane renders " + sizeText(image.width, image.height) +
+           ": start the viewer with --width " + std::to_string(expected.width) + " --height " +
+           std::to_string(expected.height) + ", or make a reference (M)";
+  const ReferenceView view = viewOf(frame);
+  const ReferenceView& made = reference.view;
+  std::string why;
+  if (view.scenePath != made.scenePath)
+    why = "another scene is open";
+  else if (view.camera != made.camera)
+    why = "the camera moved";
+  else if (!sameSize)
+    why = "the render size changed";
+  else if (view.filter != made.filter ||  // the metadata's radius has six decimals
+           std::fabs(view.filterRadius - made.filterRadius) > 1e-4f)
+    why = "the reference has another pixel filter (" + filterTypeName(made.filter) + ", " +
+          radiusText(made.filterRadius) + " px)";
+  if (why.empty()) {
+    const bool sameSampler = !reference.sampler || *reference.sampler == frame.settings.sampler;
+    if (reference.seed && *reference.seed == frame.settings.seed && sameSampler)
+      return "the reference has the pane's seed (" + std::to_string(frame.settings.seed) +
+             "): the pane would repeat its samples. Render it with another --seed, or change "
+             "the seed under Sampling";
+    return "";
+  }
+  return "reference stale: " + why +
+         (reference.fromFile ? " (R resets the camera; M makes a new reference)"
+                             : " (M makes a new one)");
+}
+
+}  // namespace pathway

@@ -1,0 +1,41 @@
+#include "viewer/stage_reference.h"
+
+#include "core/error.h"
+
+namespace pathway {
+
+uint64_t referenceSeed(uint64_t seed) {
+  return seed + 7919;  // any fixed offset gives the reference samples of its own
+}
+
+const IntegratorInfo* stageReferenceOf(const std::string& integrator) {
+  for (const IntegratorInfo* info : allIntegrators())
+    if (info->name == integrator)
+      return info->stage > 0 ? findStageIntegrator(info->stage, Variant::Reference) : nullptr;
+  return nullptr;
+}
+
+std::optional<RenderResult> renderStageReference(
+    const LaneFrame& frame, const LoadedScene& scene, uint32_t spp, uint32_t samplesPerPass,
+    const std::function<void(const RenderStats&)>& onPass, const std::atomic<bool>* cancel) {
+  const IntegratorInfo* reference = stageReferenceOf(frame.integrator);
+  if (!reference)
+    throw PathwayError("no reference of " + frame.integrator + " is built into this program");
+  RenderRecipe recipe;
+  recipe.integrator = reference->name;
+  recipe.params = frame.params;  // the stage's parameters are declared once, for both variants
+  recipe.settings = frame.settings;
+  recipe.settings.samplesPerPixel = spp;
+  recipe.settings.samplesPerPass = samplesPerPass;
+  recipe.settings.seed = referenceSeed(frame.settings.seed);
+  const CameraPose& pose = frame.camera;
+  const Camera camera(pose.position, pose.lookAt, pose.up, pose.yfov, recipe.settings.width,
+                      recipe.settings.height);
+  // A session of its own, without runRender's clearing of the TODO log, which the render worker
+  // is reading for the shown pane at the same time.
+  RenderSession session(*scene.tracer, camera, recipe);
+  if (!session.renderer().renderAll(onPass, cancel)) return std::nullopt;
+  return session.develop({});
+}
+
+}  // namespace pathway
