@@ -57,7 +57,8 @@ def read_off(entry):
     """A {value, extrapolated} pair from summary.json as text; extrapolated values get a '*'."""
     if not entry or entry.get("value") is None:
         return "–"
-    return fmt(entry["value"]) + ("*" if entry.get("extrapolated") else "")
+    return (("≤ " if entry.get("at_most") else "") + fmt(entry["value"]) +
+            ("*" if entry.get("extrapolated") else ""))
 
 
 def with_error(line):

@@ -56,7 +56,7 @@ std::optional<ReadOff> readOff(const std::vector<ChartPoint>& points, double at,
     return ReadOff{std::exp((1 - t) * std::log(*y0) + t * std::log(*y1)), false};
   }
   if (points.size() == 1 && x(points[0]) == at && y(points[0])) return ReadOff{*y(points[0])};
-  if (!fit) return std::nullopt;
+  if (!fit || fit->slope > kSteepestUnextrapolatedSlope) return std::nullopt;
   return ReadOff{fit->at(at), true};
 }
 
@@ -78,7 +78,8 @@ std::string number(const std::optional<double>& value) {
 std::string readOffJson(const std::optional<ReadOff>& value) {
   if (!value) return "null";
   return "{\"value\": " + number(value->value) +
-         ", \"extrapolated\": " + (value->extrapolated ? "true" : "false") + "}";
+         ", \"extrapolated\": " + (value->extrapolated ? "true" : "false") +
+         ", \"at_most\": " + (value->atMost ? "true" : "false") + "}";
 }
 std::string fitJson(const std::optional<LogLogFit>& fit) {
   if (!fit) return "null";
@@ -152,7 +153,11 @@ ChartSummary summarizeChart(const ChartSpec& spec, const ChartData& data) {
       line.secondsToTarget =
           ReadOff{std::exp((1 - t) * std::log(a.seconds) + t * std::log(b.seconds)), false};
     }
-    if (!line.secondsToTarget && line.relMseBySeconds && line.relMseBySeconds->slope < 0.0) {
+    const ChartPoint* first = line.points.empty() ? nullptr : &line.points.front();
+    if (!line.secondsToTarget && first && first->relMse && *first->relMse <= kTargetRelMse)
+      line.secondsToTarget = ReadOff{first->seconds, false, true};
+    if (!line.secondsToTarget && line.relMseBySeconds &&
+        line.relMseBySeconds->slope <= kSteepestUnextrapolatedSlope) {
       const LogLogFit& fit = *line.relMseBySeconds;
       line.secondsToTarget =
           ReadOff{std::exp((std::log(kTargetRelMse) - fit.intercept) / fit.slope), true};
@@ -287,7 +292,8 @@ std::string summaryMarkdown(const ChartSummary& summary) {
   out << "\n|---|---|---|---|---|---|---|---|" << (equal ? "---|---|" : "") << "\n";
   auto readOffText = [](const std::optional<ReadOff>& value) {
     if (!value || !std::isfinite(value->value)) return std::string("–");
-    return brief(value->value) + (value->extrapolated ? " (extrapolated)" : "");
+    return (value->atMost ? "≤ " : "") + brief(value->value) +
+           (value->extrapolated ? " (extrapolated)" : "");
   };
   for (size_t i = 0; i < summary.lines.size(); ++i) {
     const ChartLine& line = summary.lines[i];

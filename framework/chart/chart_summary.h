@@ -36,7 +36,12 @@ struct LogLogFit {
 struct ReadOff {
   double value = 0.0;
   bool extrapolated = false;
+  bool atMost = false;  // the line was already there at its first point: the value is a bound
 };
+
+// Fits flatter than this are not extrapolated: a line that barely falls says nothing about when
+// it would reach a far-off error.
+inline constexpr double kSteepestUnextrapolatedSlope = -0.5;
 
 struct ChartLine {
   const ChartConfig* config = nullptr;
