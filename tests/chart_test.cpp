@@ -9,6 +9,7 @@
 #include "chart/chart_summary.h"
 #include "chart/filter_profiles.h"
 #include "core/error.h"
+#include "render/integrator_registry.h"
 #include "run_command.h"
 #include "stage_under_test.h"
 
@@ -89,6 +90,11 @@ TEST(ChartSpec, RefusesWhatCannotBeCharted) {
   // A reference must estimate the same image: same scene, same filter.
   expectRefused(specOf({"a: stage1 filter=tent", "b: stage1 reference=a"}), "another filter");
   expectRefused(specOf({"a: stage1 scene=x.gltf", "b: stage1 reference=a"}), "another scene");
+  // ... and the same parameters where they change the image: AO length yes, AO ray count no.
+  expectRefused(specOf({"a: stage3 ao-distance=0.5", "b: stage2 ao-rays=8 reference=a"}),
+                "ao-distance=0.5 (not 0.25)");
+  EXPECT_NO_THROW(specOf({"a: stage3", "b: stage2 ao-rays=8 reference=a"}).check());
+  EXPECT_NO_THROW(specOf({"a: stage5", "b: stage5 nee=off light-pick=area reference=a"}).check());
   ChartSpec spec = specOf({"a: stage1"});
   spec.maxSpp = 48;
   expectRefused(spec, "power of two");
@@ -180,31 +186,57 @@ class ChartRender : public ::testing::Test {
   fs::path folder_;
 };
 
-// Plain Monte Carlo converges as 1/spp; a reference that estimates another image (AO rays twice as
-// long) makes the error level off at the bias. With 4 seeds at 24x18 pixels the fitted slopes
-// are deterministic; the bounds leave room for ±0.15 of scatter.
+// Test integrators with a known expected image: one uniform number per sample (mean 1/2), and
+// the same 20 % too bright, a bias no number of samples removes.
+class UniformIntegrator : public Integrator {
+ public:
+  explicit UniformIntegrator(float gain) : gain_(gain) {}
+  Color Li(const Ray&, SampleStream& samples, const RenderContext&) const override {
+    return Color(gain_ * samples.next1D());
+  }
+
+ private:
+  float gain_;
+};
+
+IntegratorInfo uniformIntegrator(const std::string& name, float gain) {
+  return {name,
+          0,
+          Variant::Reference,
+          "chart test: a uniform random number",
+          {},
+          SamplerType::Independent,
+          [gain](const IntegratorSetup&) { return std::make_unique<UniformIntegrator>(gain); }};
+}
+const bool kRegistered = registerIntegrator(uniformIntegrator("chart-test-uniform", 1.0f)) &&
+                         registerIntegrator(uniformIntegrator("chart-test-brighter", 1.2f));
+
+// Plain Monte Carlo converges as 1/spp, in a real stage and in the test integrator; against a
+// reference of another image the error levels off at the bias (this is how the check fails).
+// With 4 seeds at 24x18 pixels the fitted slopes are deterministic; the bounds leave ±0.15 for
+// scatter.
 TEST_F(ChartRender, IndependentSamplingConvergesAtSlopeMinusOne) {
   PATHWAY_REQUIRE_SOLUTIONS();
-  const std::string stage3 = test::stage(3);
-  ChartSpec spec = specOf(
-      {"right: " + stage3 + " sampler=independent", "biased: " + stage3 +
-                                                        " sampler=independent ao-distance=0.5 "
-                                                        "reference=right"});
+  ASSERT_TRUE(kRegistered);
+  ChartSpec spec =
+      specOf({"stage 3: " + test::stage(3) + " sampler=independent", "uniform: chart-test-uniform",
+              "biased: chart-test-brighter reference=uniform"});
   spec.width = 24;
   spec.maxSpp = 64;
   spec.seeds = 4;
   int rendered = 0;
   const ChartData data = runChart(spec, options(&rendered));
   EXPECT_GT(rendered, 0);
-  EXPECT_EQ(data.runs.size(), 2u * 7 * 4);
+  EXPECT_EQ(data.runs.size(), 3u * 7 * 4);
   const ChartSummary summary = summarizeChart(spec, data);
-  ASSERT_TRUE(summary.lines[0].relMseBySpp && summary.lines[1].relMseBySpp);
+  for (const ChartLine& line : summary.lines) ASSERT_TRUE(line.relMseBySpp);
   EXPECT_NEAR(summary.lines[0].relMseBySpp->slope, -1.0, 0.15);
-  EXPECT_GT(summary.lines[1].relMseBySpp->slope, -0.5);
+  EXPECT_NEAR(summary.lines[1].relMseBySpp->slope, -1.0, 0.15);
+  EXPECT_GT(summary.lines[2].relMseBySpp->slope, -0.5);
   EXPECT_NEAR(summary.lines[0].raysPerSample, 1.9, 0.1);  // a camera ray, and an AO ray on a hit
   EXPECT_TRUE(fs::exists(data.references[0].exrPath));
   EXPECT_EQ(data.references[0].spp, 64u * 64);
-  EXPECT_EQ(data.references[0].exrPath, data.references[1].exrPath);
+  EXPECT_EQ(data.references[1].exrPath, data.references[2].exrPath);
 
   // A rerun renders nothing and reads the same numbers back.
   int rerendered = 0;
@@ -222,7 +254,7 @@ TEST_F(ChartRender, IndependentSamplingConvergesAtSlopeMinusOne) {
   int extra = 0;
   const ChartData more = runChart(spec, options(&extra));
   EXPECT_GT(extra, 0);
-  EXPECT_EQ(more.runs.size(), 2u * 7 * 5);
+  EXPECT_EQ(more.runs.size(), 3u * 7 * 5);
 }
 
 TEST(FilterProfiles, TabulateTheCodesFilters) {

@@ -125,6 +125,19 @@ TEST(ErrorHistory, AReferenceGoesStaleWhenTheViewChanges) {
   otherScene.scenePath = "other.gltf";
   EXPECT_NE(referenceProblem(reference, otherScene).find("another scene"), std::string::npos);
 
+  // Parameters: a longer AO ray changes the expected image, more AO rays per sample do not.
+  const std::vector<ParamSpec> aoParams = {
+      ParamSpec::integer("ao-rays", 4, 1, 64, "").keepingTheExpectedImage(),
+      ParamSpec::real("ao-distance", 0.25, 0.0, 10.0, "")};
+  LaneFrame ao = flatFrame(6, 1, 0.1, 1.0f);
+  ao.params = ParamValues(aoParams);
+  const ReferenceImage aoReference = flatReference(ao, 1.0f);
+  ao.params.set("test", "ao-rays", 16);
+  EXPECT_EQ(referenceProblem(aoReference, ao), "");
+  ao.params.set("test", "ao-distance", 0.5);
+  EXPECT_NE(referenceProblem(aoReference, ao).find("ao-distance=0.5 (not 0.25)"), std::string::npos)
+      << referenceProblem(aoReference, ao);
+
   ErrorHistory history;
   history.add(moved, reference);
   EXPECT_TRUE(history.points().empty());
@@ -193,7 +206,7 @@ TEST_F(ErrorPlotFiles, LoadsAnExrAndRefusesWhatItCannotUse) {
                   {"pathway:seed", "7"},
                   {"pathway:sampler", "sobol"}},
                  0.0f);
-  const ReferenceView view{"scene.gltf", CameraPose{}, FilterType::Box, 0.5f};
+  const ReferenceView view{"scene.gltf", CameraPose{}, FilterType::Box, 0.5f, {}};
   const ReferenceImage reference = loadReference(path("ref.exr"), view);
   EXPECT_EQ(reference.image.width, 6);
   EXPECT_EQ(reference.image.height, 4);

@@ -149,6 +149,12 @@ void ChartSpec::check() const {
     if (!reference.referenceFrom.empty() && reference.referenceFrom != reference.label)
       throw PathwayError("chart configuration \"" + config.source + "\": reference=" +
                          reference.label + " takes its own reference from another configuration");
+    const std::string difference =
+        expectedImageDifference(reference.choices.recipe().params, config.choices.recipe().params);
+    if (!difference.empty())
+      throw PathwayError("chart configuration \"" + config.source +
+                         "\": reference=" + reference.label + " renders with " + difference +
+                         ", so it estimates another image");
     if (sceneOf(reference) != sceneOf(config) ||
         reference.choices.filter != config.choices.filter ||
         reference.choices.filterRadius != config.choices.filterRadius)

@@ -42,6 +42,12 @@ ParamSpec ParamSpec::real(std::string name, double defaultValue, double minValue
   return {std::move(name), ParamKind::Real, defaultValue, minValue, maxValue, {}, std::move(help)};
 }
 
+ParamSpec ParamSpec::keepingTheExpectedImage() const {
+  ParamSpec spec = *this;
+  spec.changesExpectedImage = false;
+  return spec;
+}
+
 ParamSpec ParamSpec::toggle(std::string name, bool defaultValue, std::string help) {
   return {std::move(name), ParamKind::Switch, defaultValue ? 1.0 : 0.0, 0.0, 1.0, {},
           std::move(help)};
@@ -172,6 +178,19 @@ ParamValues resolveParams(const std::string& owner, const std::vector<ParamSpec>
   ParamValues values(specs);
   for (const auto& [name, text] : given) values.setText(owner, name, text);
   return values;
+}
+
+std::string expectedImageDifference(const ParamValues& a, const ParamValues& b) {
+  for (const ParamSpec& spec : a.specs()) {
+    if (!spec.changesExpectedImage) continue;
+    for (const ParamSpec& other : b.specs()) {
+      if (other.name != spec.name || !other.changesExpectedImage) continue;
+      const double mine = a.number(spec.name), theirs = b.number(spec.name);
+      if (mine != theirs)
+        return spec.name + "=" + spec.format(mine) + " (not " + other.format(theirs) + ")";
+    }
+  }
+  return "";
 }
 
 std::pair<std::string, std::string> splitParamAssignment(const std::string& text) {

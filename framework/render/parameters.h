@@ -25,6 +25,10 @@ struct ParamSpec {
   double maxValue = 0.0;
   std::vector<std::string> options;  // Choice only
   std::string help;
+  // Whether another value changes the image the integrator converges to (a ray length, a depth),
+  // or only its noise and cost (a sample count, NEE, how lights are picked). References are
+  // shared only across values of parameters that do not (charts, the viewer's error plot).
+  bool changesExpectedImage = true;
 
   static ParamSpec integer(std::string name, long long defaultValue, long long minValue,
                            long long maxValue, std::string help);
@@ -33,6 +37,9 @@ struct ParamSpec {
   static ParamSpec toggle(std::string name, bool defaultValue, std::string help);
   static ParamSpec choice(std::string name, const std::string& defaultOption,
                           std::vector<std::string> options, std::string help);
+
+  // This declaration, marked as one that changes only noise and cost.
+  ParamSpec keepingTheExpectedImage() const;
 
   bool isWholeNumber() const { return kind != ParamKind::Real; }
   // True when `value` is one this parameter can take (in range; whole where it must be).
@@ -73,6 +80,10 @@ class ParamValues {
   std::vector<ParamSpec> specs_;
   std::map<std::string, double> values_;
 };
+
+// The first parameter that `a` and `b` both declare, that changes the expected image, and that
+// they set to different values, as "name=value (not other)"; empty when there is none.
+std::string expectedImageDifference(const ParamValues& a, const ParamValues& b);
 
 // The defaults of `specs` with `given` (name -> text) applied; throws PathwayError as set() does.
 ParamValues resolveParams(const std::string& owner, const std::vector<ParamSpec>& specs,

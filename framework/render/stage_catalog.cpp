@@ -29,7 +29,9 @@ std::vector<StageDeclaration> declareStages() {
        "stage2",
        "stage2_nested_ao.cpp",
        "nested AO: per eye sample, M cosine-weighted AO rays of length D",
-       {ParamSpec::integer("ao-rays", 4, 1, 1024, "M: AO rays per eye sample"), aoDistance()},
+       {ParamSpec::integer("ao-rays", 4, 1, 1024, "M: AO rays per eye sample")
+            .keepingTheExpectedImage(),
+        aoDistance()},
        SamplerType::Independent},
       {3,
        "stage3",
@@ -41,11 +43,13 @@ std::vector<StageDeclaration> declareStages() {
        "stage4",
        "stage4_naive_recursion.cpp",
        "naive recursive tracing: N random rays at every hit, down to depth D",
-       {ParamSpec::integer("branching", 3, 1, 1024, "N: rays cast at every hit"),
+       {ParamSpec::integer("branching", 3, 1, 1024, "N: rays cast at every hit")
+            .keepingTheExpectedImage(),
         ParamSpec::integer("depth", 2, 0, 64,
                            "D: bounces; 0 shows emitters only, 1 adds direct light"),
         ParamSpec::integer("max-rays", 1000000, 1, 1000000000000,
-                           "refuse settings that cast more rays per camera sample")},
+                           "refuse settings that cast more rays per camera sample")
+            .keepingTheExpectedImage()},
        SamplerType::Independent,
        checkNaiveRecursionBudget},
       {5,
@@ -55,12 +59,15 @@ std::vector<StageDeclaration> declareStages() {
        {ParamSpec::integer(
             "max-depth", 5, -1, 1000,
             "most bounces a path takes (0: emitters only, 1: direct light; -1: no limit)"),
-        ParamSpec::integer("rr-depth", 3, 0, 1000, "bounces before Russian roulette starts"),
+        ParamSpec::integer("rr-depth", 3, 0, 1000, "bounces before Russian roulette starts")
+            .keepingTheExpectedImage(),
         ParamSpec::toggle("nee", true,
                           "next-event estimation: shadow rays to the emitters (off: only "
-                          "bounces find light)"),
+                          "bounces find light)")
+            .keepingTheExpectedImage(),
         ParamSpec::choice("light-pick", "power", {"area", "power"},
-                          "how next-event estimation picks an emitter: by area or by power")},
+                          "how next-event estimation picks an emitter: by area or by power")
+            .keepingTheExpectedImage()},
        SamplerType::Independent},
   };
 }

@@ -5,9 +5,12 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <map>
+#include <sstream>
 
 #include "core/error.h"
 #include "io/image_io.h"
+#include "render/integrator_registry.h"
 
 namespace pathway {
 namespace {
@@ -25,8 +28,8 @@ std::string radiusText(float radius) {
 }  // namespace
 
 ReferenceView viewOf(const LaneFrame& frame) {
-  return {frame.scenePath, frame.camera, frame.settings.filter,
-          frame.settings.filterRadiusPixels()};
+  return {frame.scenePath, frame.camera, frame.settings.filter, frame.settings.filterRadiusPixels(),
+          frame.params};
 }
 
 ReferenceImage loadReference(const std::string& path, const ReferenceView& view) {
@@ -63,6 +66,17 @@ ReferenceImage loadReference(const std::string& path, const ReferenceView& view)
       reference.view.filterRadius = std::stof(radius->second);
     }
     if (seed != metadata.end()) reference.seed = std::stoull(seed->second);
+    const auto params = metadata.find("pathway:params");
+    if (integrator != metadata.end() && params != metadata.end()) {
+      // Parameters of an integrator this program does not have cannot be compared: left out.
+      const IntegratorInfo* info = nullptr;
+      for (const IntegratorInfo* known : allIntegrators())
+        if (known->name == integrator->second) info = known;
+      std::map<std::string, std::string> given;
+      std::istringstream words(params->second);
+      for (std::string word; words >> word;) given.insert(splitParamAssignment(word));
+      if (info) reference.view.params = resolveParams(info->name, info->params, given);
+    }
     if (sampler != metadata.end()) reference.sampler = parseSamplerType(sampler->second);
   } catch (const std::exception& error) {
     throw PathwayError(path + ": unreadable pathway metadata: " + error.what());
@@ -92,6 +106,9 @@ std::string referenceProblem(const ReferenceImage& reference, const LaneFrame& f
            std::fabs(view.filterRadius - made.filterRadius) > 1e-4f)
     why = "the reference has another pixel filter (" + filterTypeName(made.filter) + ", " +
           radiusText(made.filterRadius) + " px)";
+  else if (const std::string difference = expectedImageDifference(frame.params, made.params);
+           !difference.empty())
+    why = "the pane renders with " + difference + ", which changes the expected image";
   if (why.empty()) {
     const bool sameSampler = !reference.sampler || *reference.sampler == frame.settings.sampler;
     if (reference.seed && *reference.seed == frame.settings.seed && sameSampler)

@@ -1,6 +1,7 @@
 // The image the error plot measures the panes against: loaded with `pathway view --reference`, or
 // made on demand (Make reference, key M). It holds for the view it was made at: another scene,
-// camera, pixel filter or image size changes the expected image, and the reference goes stale.
+// camera, pixel filter, image size or parameter that changes the expected image (an AO length, a
+// depth: ParamSpec::changesExpectedImage) makes the reference stale.
 #pragma once
 
 #include <cstdint>
@@ -9,6 +10,7 @@
 
 #include "film/film.h"
 #include "film/pixel_filter.h"
+#include "render/parameters.h"
 #include "sampling/sampler.h"
 #include "viewer/orbit_camera.h"
 #include "viewer/render_worker.h"
@@ -21,6 +23,7 @@ struct ReferenceView {
   CameraPose camera;
   FilterType filter = FilterType::Box;
   float filterRadius = 0.0f;  // in pixels, 0 decoded to the filter's own
+  ParamValues params;         // of the integrator that made it (empty: not known)
 };
 
 ReferenceView viewOf(const LaneFrame& frame);

@@ -92,8 +92,11 @@ int runViewer(const ViewerOptions& options) {
   std::optional<ReferenceImage> reference;
   if (!options.reference.empty()) {
     // A file holds no camera: it is taken to show the scene's own, where the viewer starts.
-    const ReferenceView view{scene->scene.sourcePath, OrbitCamera(scene->scene).pose(),
-                             state.settings.filter, state.settings.filterRadiusPixels()};
+    const ReferenceView view{scene->scene.sourcePath,
+                             OrbitCamera(scene->scene).pose(),
+                             state.settings.filter,
+                             state.settings.filterRadiusPixels(),
+                             {}};
     reference = loadReference(options.reference, view);  // a bad file fails before any window
   }
   std::unique_ptr<Platform> platform =
