@@ -69,21 +69,32 @@ RenderRecipe benchRecipe(const std::string& name, const Params& params, int widt
 
 }  // namespace
 
-double rendererSeconds(const Scene& scene, const RayTracer& tracer, const std::string& name,
-                       const Params& params, int width, uint32_t spp, int repeats, int threads,
-                       uint64_t* raysPerPass) {
+PassTimer::PassTimer(const Scene& scene, const RayTracer& tracer, const std::string& name,
+                     const Params& params, int width, uint32_t spp, int passes, int threads) {
   RenderRecipe recipe = benchRecipe(name, params, width, spp);
-  recipe.settings.samplesPerPixel = spp * (1 + repeats);
+  recipe.settings.samplesPerPixel = spp * (1 + passes);
   recipe.settings.threads = threads;
-  RenderSession session(tracer, Camera(scene, width, width), recipe);
-  Renderer& renderer = session.renderer();
-  renderer.renderPass();
+  session_ = std::make_unique<RenderSession>(tracer, Camera(scene, width, width), recipe);
+  timePass();
+}
+
+PassTimer::~PassTimer() = default;
+
+double PassTimer::timePass() {
+  Renderer& renderer = session_->renderer();
+  const uint64_t before = renderer.stats().counters.totalRays();
+  const double seconds = secondsOf([&] { renderer.renderPass(); });
+  raysPerPass_ = renderer.stats().counters.totalRays() - before;
+  return seconds;
+}
+
+double rendererSeconds(const Scene& scene, const RayTracer& tracer, const std::string& name,
+                       const Params& params, int width, uint32_t spp, int repeats,
+                       uint64_t* raysPerPass) {
+  PassTimer timer(scene, tracer, name, params, width, spp, repeats);
   double best = 1e30;
-  for (int i = 0; i < repeats; ++i) {
-    const uint64_t before = renderer.stats().counters.totalRays();
-    best = std::min(best, secondsOf([&] { renderer.renderPass(); }));
-    *raysPerPass = renderer.stats().counters.totalRays() - before;
-  }
+  for (int i = 0; i < repeats; ++i) best = std::min(best, timer.timePass());
+  *raysPerPass = timer.raysPerPass();
   return best;
 }
 
@@ -98,20 +109,30 @@ std::vector<LoggedRay> recordRays(const Scene& scene, RayTracer& tracer, const s
   return log;
 }
 
-double replaySeconds(const RawEmbree& raw, const std::vector<LoggedRay>& log, int repeats,
-                     int threads) {
-  std::vector<char> sink(log.size());
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+ReplayTimer::ReplayTimer(const RawEmbree& raw, const std::vector<LoggedRay>& log, int threads)
+    : raw_(raw),
+      log_(log),
+      sink_(log.size()),
+      arena_(threads > 0 ? threads : tbb::task_arena::automatic) {}
+
+double ReplayTimer::timeReplay() {
   double seconds = 0.0;
-  arena.execute([&] {
-    seconds = bestSeconds(repeats, [&] {
-      tbb::parallel_for(size_t(0), log.size(), [&](size_t i) {
-        const LoggedRay& r = log[i];
-        sink[i] = r.occlusionOnly ? raw.occluded(r.ray) : raw.intersect(r.ray) < kInfinity;
+  arena_.execute([&] {
+    seconds = secondsOf([&] {
+      tbb::parallel_for(size_t(0), log_.size(), [&](size_t i) {
+        const LoggedRay& r = log_[i];
+        sink_[i] = r.occlusionOnly ? raw_.occluded(r.ray) : raw_.intersect(r.ray) < kInfinity;
       });
     });
   });
   return seconds;
+}
+
+double replaySeconds(const RawEmbree& raw, const std::vector<LoggedRay>& log, int repeats) {
+  ReplayTimer timer(raw, log);
+  double best = 1e30;
+  for (int i = 0; i < repeats; ++i) best = std::min(best, timer.timeReplay());
+  return best;
 }
 
 std::string caseLabel(const std::string& integrator, const Params& params) {

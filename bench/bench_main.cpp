@@ -80,9 +80,9 @@ int benchRays(const std::string& scenePath, int width, int repeats) {
   const double rawBounce = measureRaw(rays.incoherent), apiBounce = measureApi(rays.incoherent);
   uint64_t rendererPrimaryRays = 0, rendererBounceRays = 0;
   const double rendererPrimary =
-      rendererSeconds(scene, tracer, "stage1@ref", {}, width, 1, repeats, 0, &rendererPrimaryRays);
+      rendererSeconds(scene, tracer, "stage1@ref", {}, width, 1, repeats, &rendererPrimaryRays);
   const double rendererBounce =
-      rendererSeconds(scene, tracer, "bench-bounce", {}, width, 1, repeats, 0, &rendererBounceRays);
+      rendererSeconds(scene, tracer, "bench-bounce", {}, width, 1, repeats, &rendererBounceRays);
 
   std::printf("%-40s %12s %10s\n", "ray set / path", "Mrays/s", "vs raw");
   auto row = [](const char* name, double mrays, double rawMrays) {
@@ -118,7 +118,7 @@ int benchStages(const std::string& scenePath, int width, int repeats) {
   for (const StageCase& c : kStageCases) {
     uint64_t rays = 0;
     const double seconds =
-        rendererSeconds(scene, tracer, c.integrator, c.params, width, c.spp, repeats, 0, &rays);
+        rendererSeconds(scene, tracer, c.integrator, c.params, width, c.spp, repeats, &rays);
     const std::vector<LoggedRay> log =
         recordRays(scene, tracer, c.integrator, c.params, width, c.spp);
     const double rawSeconds = replaySeconds(raw, log, repeats);
@@ -179,7 +179,8 @@ constexpr const char* kUsage =
     "       pathway_bench memory SCENE\n"
     "       pathway_bench growth [scene] [--out DIR] [--max-triangles N] [--width W] "
     "[--repeats R]\n"
-    "  rays:   raw Embree vs the framework, rays/s (default scene: the Cornell box)\n"
+    "  rays:   raw Embree vs the framework, rays/s (default scene: the Cornell box; width 512,\n"
+    "          best of 5 repeats; growth: best of 10)\n"
     "  stages: every stage vs raw Embree on the same rays\n"
     "  memory: resident bytes per triangle and BVH build time of a scene\n"
     "  growth: how cost grows, in one run: stages vs raw Embree, 1 vs 2 threads, cost vs spp,\n"

@@ -93,6 +93,20 @@ std::string cpuModel() {
   return "unknown CPU";
 }
 
+// "L1d 48K, L2 2048K, L3 491520K": the data caches of the first CPU, as Linux reports them.
+std::string dataCaches() {
+  std::string caches;
+  for (int index = 0;; ++index) {
+    const std::string dir = "/sys/devices/system/cpu/cpu0/cache/index" + std::to_string(index);
+    std::ifstream levelFile(dir + "/level"), typeFile(dir + "/type"), sizeFile(dir + "/size");
+    std::string level, type, size;
+    if (!(levelFile >> level) || !(typeFile >> type) || !(sizeFile >> size)) break;
+    if (type == "Instruction") continue;
+    caches += (caches.empty() ? "L" : ", L") + level + (type == "Data" ? "d " : " ") + size;
+  }
+  return caches.empty() ? "unknown" : caches;
+}
+
 // A value in kB from /proc/meminfo or /proc/self/status ("MemTotal:", "VmHWM:"), in bytes.
 long procKilobytes(const char* file, const std::string& key) {
   std::ifstream in(file);
@@ -120,59 +134,88 @@ int cappedThreads(int threads) {
   return std::min(threads, tbb::info::default_concurrency());
 }
 
+// One stage's renderer and raw replay, ready to time on every thread count measured.
+struct StageTimers {
+  std::string label;
+  uint32_t spp = 0;
+  std::vector<LoggedRay> log;
+  std::map<int, std::unique_ptr<PassTimer>> passes;     // by thread count
+  std::map<int, std::unique_ptr<ReplayTimer>> replays;  // by thread count
+  std::map<int, double> bestPass, bestReplay;           // seconds, by thread count
+};
+
 void benchStagesAndThreads(const Scene& scene, RayTracer& tracer, const GrowthOptions& options) {
   const int cores = tbb::info::default_concurrency();
   const int one = 1, two = cappedThreads(2);
   std::printf(
-      "a. Every stage against raw Embree on the same rays: %dx%d, %d threads, best of %d "
-      "passes after a warm-up;\n   raw: the pass's rays, recorded, traced by "
-      "rtcIntersect1/rtcOccluded1\n",
-      options.width, options.width, cores, options.repeats);
-  std::printf("%-22s %12s %10s %12s %8s\n", "integrator", "rays/sample", "Mrays/s", "raw Mrays/s",
-              "ratio");
+      "a. Every stage against raw Embree on the same rays: %dx%d, %d threads, best of %d passes\n"
+      "   after a warm-up; raw: the pass's rays, recorded, traced by rtcIntersect1/rtcOccluded1.\n"
+      "   Each stage, thread count, renderer and raw replay is timed once per round, %d rounds:\n"
+      "   a busy spell of the machine costs each entry one round, not all of its runs\n",
+      options.width, options.width, cores, options.repeats, options.repeats);
   std::fflush(stdout);
+  const RawEmbree raw(scene);
+  std::vector<std::unique_ptr<StageTimers>> stages;  // pointers: the replays refer to the logs
+  for (const StageCase& c : kStageCases) {
+    auto& stage = *stages.emplace_back(std::make_unique<StageTimers>());
+    stage.label = caseLabel(c.integrator, c.params);
+    stage.spp = c.spp;
+    stage.log = recordRays(scene, tracer, c.integrator, c.params, options.width, c.spp);
+    for (int threads : {one, two, cores}) {
+      if (stage.passes.count(threads)) continue;
+      stage.passes[threads] = std::make_unique<PassTimer>(
+          scene, tracer, c.integrator, c.params, options.width, c.spp, options.repeats, threads);
+      stage.replays[threads] = std::make_unique<ReplayTimer>(raw, stage.log, threads);
+      stage.bestPass[threads] = stage.bestReplay[threads] = 1e30;
+    }
+  }
+  for (int round = 0; round < options.repeats; ++round) {
+    for (auto& stage : stages) {
+      for (auto& [threads, pass] : stage->passes) {
+        stage->bestPass[threads] = std::min(stage->bestPass[threads], pass->timePass());
+        stage->bestReplay[threads] =
+            std::min(stage->bestReplay[threads], stage->replays[threads]->timeReplay());
+      }
+    }
+  }
+
   CsvRows stageRows = {
       {"integrator", "rays_per_sample", "mrays_per_s", "raw_mrays_per_s", "ratio"}};
   CsvRows threadRows = {{"integrator", "threads_low", "threads_high", "mrays_per_s_low",
                          "mrays_per_s_high", "speedup", "raw_mrays_per_s_low",
                          "raw_mrays_per_s_high", "raw_speedup"}};
+  std::printf("%-22s %12s %10s %12s %8s\n", "integrator", "rays/sample", "Mrays/s", "raw Mrays/s",
+              "ratio");
   std::vector<std::string> threadLines;
-  const RawEmbree raw(scene);
-  for (const StageCase& c : kStageCases) {
-    const std::string label = caseLabel(c.integrator, c.params);
-    const std::vector<LoggedRay> log =
-        recordRays(scene, tracer, c.integrator, c.params, options.width, c.spp);
-    std::map<int, Rates> byThreads;  // every thread count measured once
-    uint64_t raysPerPass = 0;
-    for (int threads : {one, two, cores}) {
-      if (byThreads.count(threads)) continue;
-      const double seconds = rendererSeconds(scene, tracer, c.integrator, c.params, options.width,
-                                             c.spp, options.repeats, threads, &raysPerPass);
-      const double rawSeconds = replaySeconds(raw, log, options.repeats, threads);
-      byThreads[threads] = {raysPerPass / seconds * 1e-6, log.size() / rawSeconds * 1e-6};
-    }
-    const Rates all = byThreads[cores], low = byThreads[one], high = byThreads[two];
+  for (const auto& stage : stages) {
+    // Exact counts: the same for every pass and thread count.
+    const uint64_t raysPerPass = stage->passes[cores]->raysPerPass();
+    auto rates = [&](int threads) {
+      return Rates{raysPerPass / stage->bestPass[threads] * 1e-6,
+                   stage->log.size() / stage->bestReplay[threads] * 1e-6};
+    };
+    const Rates all = rates(cores), low = rates(one), high = rates(two);
     const double raysPerSample =
-        double(raysPerPass) / (double(options.width) * options.width * c.spp);
-    std::printf("%-22s %12.2f %10.2f %12.2f %8.2f\n", label.c_str(), raysPerSample, all.renderer,
-                all.raw, all.renderer / all.raw);
-    std::fflush(stdout);
+        double(raysPerPass) / (double(options.width) * options.width * stage->spp);
+    const char* label = stage->label.c_str();
+    std::printf("%-22s %12.2f %10.2f %12.2f %8.2f\n", label, raysPerSample, all.renderer, all.raw,
+                all.renderer / all.raw);
     stageRows.push_back({label, number(raysPerSample, 4), number(all.renderer, 4),
-                         number(all.raw, 4), number(all.renderer / all.raw, 3)});
+                         number(all.raw, 4), number(all.renderer / all.raw, 4)});
     char line[256];
-    std::snprintf(line, sizeof line, "%-22s %10.2f %10.2f %9.2f %10.2f %10.2f %9.2f", label.c_str(),
+    std::snprintf(line, sizeof line, "%-22s %10.2f %10.2f %9.2f %10.2f %10.2f %9.2f", label,
                   low.renderer, high.renderer, high.renderer / low.renderer, low.raw, high.raw,
                   high.raw / low.raw);
     threadLines.push_back(line);
     threadRows.push_back({label, std::to_string(one), std::to_string(two), number(low.renderer, 4),
-                          number(high.renderer, 4), number(high.renderer / low.renderer, 3),
-                          number(low.raw, 4), number(high.raw, 4), number(high.raw / low.raw, 3)});
+                          number(high.renderer, 4), number(high.renderer / low.renderer, 4),
+                          number(low.raw, 4), number(high.raw, 4), number(high.raw / low.raw, 4)});
   }
   writeCsv(options.outDir, "stages.csv", stageRows);
 
   std::printf(
-      "\nb. Thread scaling: renderer with settings.threads = %d and %d; raw Embree replay in a "
-      "%d- and a %d-thread task arena\n",
+      "\nb. Thread scaling (the rounds of a): renderer with settings.threads = %d and %d;\n"
+      "   raw Embree replay in a %d- and a %d-thread task arena\n",
       one, two, one, two);
   const std::string low = "Mrays/s " + std::to_string(one), high = "Mrays/s " + std::to_string(two);
   std::printf("%-22s %10s %10s %9s %10s %10s %9s\n", "integrator", low.c_str(), high.c_str(),
@@ -192,37 +235,44 @@ void benchSpp(const Scene& scene, const RayTracer& tracer, const GrowthOptions& 
   const uint32_t sppValues[] = {1, 2, 4, 8, 16, 32, 64};
   std::printf(
       "\nc. Cost against samples per pixel: whole renders (runRender) at %dx%d, all cores, "
-      "best of %d\n",
+      "best of %d rounds over every spp\n",
       kSppSide, kSppSide, options.repeats);
   std::printf("%-22s %5s %10s %12s %12s %10s\n", "integrator", "spp", "seconds", "rays",
               "rays/(px*spp)", "Mrays/s");
   CsvRows rows = {{"integrator", "spp", "seconds", "rays", "mrays_per_s"}};
   std::vector<std::string> fits;
+  const Camera camera(scene, kSppSide, kSppSide);
   for (const char* integrator : {"stage3@ref", "stage5@ref"}) {
-    std::vector<double> spps, seconds;
-    for (uint32_t spp : sppValues) {
-      const IntegratorInfo& info = findIntegrator(integrator);
-      RenderRecipe recipe;
-      recipe.integrator = integrator;
-      recipe.params = resolveParams(integrator, info.params, {});
-      recipe.settings.width = recipe.settings.height = kSppSide;
-      recipe.settings.samplesPerPixel = spp;
-      recipe.settings.samplesPerPass = 1;  // as `pathway render` runs by default
-      recipe.settings.sampler = info.defaultSampler;
-      const Camera camera(scene, kSppSide, kSppSide);
-      uint64_t rays = 0;
-      const double best = bestSeconds(options.repeats, [&] {
-        rays = runRender(tracer, camera, recipe).stats.counters.totalRays();
-      });
-      spps.push_back(spp);
-      seconds.push_back(best);
-      std::printf("%-22s %5u %10.4f %12llu %12.3f %10.2f\n", integrator, spp, best,
-                  static_cast<unsigned long long>(rays), double(rays) / (kSppSide * kSppSide * spp),
-                  rays / best * 1e-6);
-      std::fflush(stdout);
-      rows.push_back({integrator, std::to_string(spp), number(best), std::to_string(rays),
-                      number(rays / best * 1e-6, 4)});
+    const IntegratorInfo& info = findIntegrator(integrator);
+    RenderRecipe recipe;
+    recipe.integrator = integrator;
+    recipe.params = resolveParams(integrator, info.params, {});
+    recipe.settings.width = recipe.settings.height = kSppSide;
+    recipe.settings.samplesPerPass = 1;  // as `pathway render` runs by default
+    recipe.settings.sampler = info.defaultSampler;
+    // Every spp once per round, so that a busy moment of the machine bends no part of the curve
+    // more than another.
+    std::vector<double> spps(std::begin(sppValues), std::end(sppValues));
+    std::vector<double> seconds(spps.size(), 1e30);
+    std::vector<uint64_t> rays(spps.size());
+    for (int round = 0; round < options.repeats; ++round) {
+      for (size_t k = 0; k < spps.size(); ++k) {
+        recipe.settings.samplesPerPixel = sppValues[k];
+        seconds[k] = std::min(seconds[k], secondsOf([&] {
+                                rays[k] =
+                                    runRender(tracer, camera, recipe).stats.counters.totalRays();
+                              }));
+      }
     }
+    for (size_t k = 0; k < spps.size(); ++k) {
+      const double mrays = rays[k] / seconds[k] * 1e-6;
+      std::printf("%-22s %5u %10.4f %12llu %12.3f %10.2f\n", integrator, sppValues[k], seconds[k],
+                  static_cast<unsigned long long>(rays[k]),
+                  double(rays[k]) / (kSppSide * kSppSide * sppValues[k]), mrays);
+      rows.push_back({integrator, std::to_string(sppValues[k]), number(seconds[k]),
+                      std::to_string(rays[k]), number(mrays, 4)});
+    }
+    std::fflush(stdout);
     char fit[160];
     std::snprintf(fit, sizeof fit, "%s: seconds ~ spp^%.3f", integrator,
                   fittedSlope(logOf(spps), logOf(seconds)));
@@ -415,21 +465,26 @@ int growthGridChild(int cells, int width, int repeats) {
     for (int x = 0; x < width; ++x)
       rays.push_back(camera.generateRay(Vec2(x + rng.nextFloat(), y + rng.nextFloat())));
   std::vector<float> sink(rays.size());
-  auto megaRaysPerSecond = [&](const std::function<float(const Ray&)>& trace) {
-    const double seconds = bestSeconds(repeats, [&] {
-      tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) { sink[i] = trace(rays[i]); });
-    });
-    return rays.size() / seconds * 1e-6;
-  };
-  const double mrays = megaRaysPerSecond([&](const Ray& ray) {
-    RayCounters ignored;
-    const auto hit = tracer->intersect(ray, RayKind::Primary, ignored);
-    return hit ? hit->distance : kInfinity;
-  });
-  // Raw Embree last, once the memory figures above are taken: its BVH is a second copy.
+  // Raw Embree once the memory figures above are taken: its BVH is a second copy.
   std::unique_ptr<RawEmbree> raw;
   const double rawBuildSeconds = secondsOf([&] { raw = std::make_unique<RawEmbree>(scene); });
-  const double rawMrays = megaRaysPerSecond([&](const Ray& ray) { return raw->intersect(ray); });
+  auto traceAll = [&](auto trace) {
+    return secondsOf([&] {
+      tbb::parallel_for(size_t(0), rays.size(), [&](size_t i) { sink[i] = trace(rays[i]); });
+    });
+  };
+  double seconds = 1e30, rawSeconds = 1e30;
+  // In turns, so that on a shared machine both see the same load.
+  for (int round = 0; round < repeats; ++round) {
+    seconds = std::min(seconds, traceAll([&](const Ray& ray) {
+                         RayCounters ignored;
+                         const auto hit = tracer->intersect(ray, RayKind::Primary, ignored);
+                         return hit ? hit->distance : kInfinity;
+                       }));
+    rawSeconds =
+        std::min(rawSeconds, traceAll([&](const Ray& ray) { return raw->intersect(ray); }));
+  }
+  const double mrays = rays.size() / seconds * 1e-6, rawMrays = rays.size() / rawSeconds * 1e-6;
 
   const double triangles = static_cast<double>(scene.triangleCount());
   std::printf(
@@ -461,9 +516,10 @@ int benchGrowth(const GrowthOptions& options) {
       "pathway_bench growth: %s, %d cores, %.1f GiB, load average %.2f at the start, Embree %s, "
       "%s\n",
       cpu.c_str(), cores, memoryGiB, load, RTC_VERSION_STRING, utcNow().c_str());
+  const std::string caches = dataCaches();
   const Scene scene = loadScene(options.scene);
-  std::printf("scene for tables a-c: %s (%zu triangles)\n\n", options.scene.c_str(),
-              scene.triangleCount());
+  std::printf("caches: %s; scene for tables a-c: %s (%zu triangles)\n\n", caches.c_str(),
+              options.scene.c_str(), scene.triangleCount());
   std::fflush(stdout);
   writeCsv(options.outDir, "machine.csv",
            {{"key", "value"},
@@ -471,6 +527,7 @@ int benchGrowth(const GrowthOptions& options) {
             {"cores", std::to_string(cores)},
             {"memory_gib", number(memoryGiB, 3)},
             {"load_average", number(load, 3)},
+            {"caches", caches},
             {"embree", RTC_VERSION_STRING},
             {"date", utcNow()},
             {"scene", std::filesystem::path(options.scene).filename().string()},

@@ -11,8 +11,8 @@ namespace pathway::bench {
 
 struct GrowthOptions {
   std::string scene;   // for the stage, thread and spp tables
-  int width = 256;     // image side of the stage and thread tables, and of the grids' ray sets
-  int repeats = 5;     // best of this many timed runs
+  int width = 512;     // image side of the stage and thread tables, and of the grids' ray sets
+  int repeats = 10;    // best of this many timed runs: the least disturbed on a shared machine
   std::string outDir;  // empty: print only, write no CSV
   uint64_t maxTriangles = 10'000'000;
 };

@@ -17,6 +17,7 @@ import matplotlib
 
 matplotlib.use("Agg")  # files only, no display
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker as ticker  # noqa: E402
 import numpy as np  # noqa: E402
 
 RENDERER = "#1f77b4"
@@ -30,7 +31,8 @@ def read_csv(folder, name):
         with open(path, newline="") as f:
             return list(csv.DictReader(f))
     except OSError as error:
-        sys.exit(f"draw_growth: {path}: {error.strerror} (run `pathway_bench growth --out DIR` first)")
+        sys.exit(f"draw_growth: {path}: {error.strerror} "
+                 "(run `pathway_bench growth --out DIR` first)")
 
 
 def machine_line(folder):
@@ -77,8 +79,8 @@ def draw_stages(folder, machine, info):
     ax.set_ylim(0, max(raw + renderer) * 1.15)
     ax.legend(loc="upper right", fontsize=9)
     ax.grid(axis="y", alpha=0.3)
-    title(fig, f"Each stage against raw Embree on its own recorded rays "
-               f"({info['scene']}, {info['width']}² px, all cores; label: renderer / raw)", machine)
+    title(fig, f"Each stage against raw Embree on its own recorded rays ({info['scene']}, "
+               f"{info['width']}² px, all cores; label: renderer / raw)", machine)
     save(fig, folder, "stages")
 
 
@@ -150,7 +152,7 @@ def draw_spp(folder, machine, info):
     save(fig, folder, "spp")
 
 
-def draw_bvh(folder, machine, _info):
+def draw_bvh(folder, machine, info):
     rows = read_csv(folder, "bvh.csv")
     n = np.array([float(r["triangles"]) for r in rows])
 
@@ -178,6 +180,9 @@ def draw_bvh(folder, machine, _info):
                     label="peak resident, scene + build")
     memory.set_ylabel("bytes per triangle")
     memory.set_yscale("log")
+    memory.yaxis.set_major_locator(ticker.FixedLocator([10, 20, 50, 100, 200, 500]))
+    memory.yaxis.set_major_formatter(ticker.ScalarFormatter())
+    memory.yaxis.set_minor_formatter(ticker.NullFormatter())
     memory.set_title("memory per triangle (fixed costs dominate small scenes)")
 
     rate.semilogx(n, column("mrays_per_s"), "o-", color=RENDERER, label="RayTracer::intersect")
@@ -194,14 +199,21 @@ def draw_bvh(folder, machine, _info):
         latency.semilogx(n, intercept + slope * np.log2(n), "--", color=color, linewidth=1)
     latency.set_ylabel("nanoseconds per primary ray")
     latency.set_ylim(bottom=0)
-    latency.set_title("time per ray against log n (dashed: a + b·log₂ n)")
+    latency.set_title("time per primary ray (dashed: fitted a + b·log₂ n)")
 
     for ax in axes.flat:
         ax.set_xlabel("triangles (generated height-field grid)")
         ax.grid(which="both", alpha=0.3)
         ax.legend(fontsize=8)
+    # What the rays walk through, under each size: the BVH (Embree's count) and the scene arrays.
+    megabytes = (column("embree_bvh_bytes_per_triangle") +
+                 column("resident_scene_bytes_per_triangle")) * n / 2**20
+    latency.set_xticks(n, [f"{count:,.0f}\n{mb:.3g} MB" for count, mb in zip(n, megabytes)],
+                       fontsize=8)
+    latency.xaxis.set_minor_formatter(ticker.NullFormatter())
+    latency.set_xlabel("triangles, and BVH + scene arrays in memory")
     title(fig, "How the BVH grows: build time, memory and ray cost from 10k triangles up "
-               "(each size in a fresh process)", machine)
+               f"(each size in a fresh process; caches {info.get('caches', 'unknown')})", machine)
     save(fig, folder, "bvh")
 
 
