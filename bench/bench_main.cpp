@@ -3,120 +3,28 @@
 //   pathway_bench rays   [scene] [--width W] [--repeats R]   raw Embree vs the framework, rays/s
 //   pathway_bench stages [scene] [--width W] [--repeats R]   each stage vs raw Embree, same rays
 //   pathway_bench memory SCENE                                resident bytes per triangle, BVH
-//   build
-#include <embree3/rtcore.h>
+//                                                             build
+//   pathway_bench growth [scene] [--out DIR] [--max-triangles N] [--width W] [--repeats R]
+//                                       how cost grows: the tables of bench/growth.h, as CSV too
+#include <tbb/info.h>
 #include <tbb/parallel_for.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
-#include <cstring>
-#include <fstream>
-#include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "bench_kit.h"
 #include "core/error.h"
+#include "growth.h"
 #include "render/render_session.h"
-#include "sampling/pcg32.h"
+#include "render/render_settings.h"
 #include "scene/gltf_loader.h"
 
-namespace pathway {
+namespace pathway::bench {
 namespace {
-
-double secondsOf(const std::function<void()>& work) {
-  const auto start = std::chrono::steady_clock::now();
-  work();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// Best of `repeats` runs: the least disturbed by other processes on a shared machine.
-double bestSeconds(int repeats, const std::function<void()>& work) {
-  double best = 1e30;
-  for (int i = 0; i < repeats; ++i) best = std::min(best, secondsOf(work));
-  return best;
-}
-
-// ---- Raw Embree: the same arrays, no framework in between. ----
-struct RawEmbree {
-  RTCDevice device = rtcNewDevice(nullptr);
-  RTCScene scene = rtcNewScene(device);
-
-  explicit RawEmbree(const Scene& s) {
-    rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_COMPACT);
-    for (uint32_t i = 0; i < s.meshes.size(); ++i) {
-      RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-      rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                 s.meshes[i].positions.data(), 0, sizeof(Vec3),
-                                 s.meshes[i].positions.size());
-      rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                 s.meshes[i].triangles.data(), 0, sizeof(glm::uvec3),
-                                 s.meshes[i].triangles.size());
-      rtcCommitGeometry(g);
-      rtcAttachGeometryByID(scene, g, i);
-      rtcReleaseGeometry(g);
-    }
-    rtcCommitScene(scene);
-  }
-  ~RawEmbree() {
-    rtcReleaseScene(scene);
-    rtcReleaseDevice(device);
-  }
-  // Returns the hit distance, or infinity.
-  float intersect(const Ray& ray) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    RTCRayHit rh;
-    rh.ray.org_x = ray.origin.x, rh.ray.org_y = ray.origin.y, rh.ray.org_z = ray.origin.z;
-    rh.ray.dir_x = ray.direction.x, rh.ray.dir_y = ray.direction.y, rh.ray.dir_z = ray.direction.z;
-    rh.ray.tnear = 0.0f, rh.ray.tfar = ray.tMax, rh.ray.time = 0.0f;
-    rh.ray.mask = 0xFFFFFFFFu, rh.ray.id = 0, rh.ray.flags = 0;
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(scene, &context, &rh);
-    return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? kInfinity : rh.ray.tfar;
-  }
-  bool occluded(const Ray& ray) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    RTCRay r;
-    r.org_x = ray.origin.x, r.org_y = ray.origin.y, r.org_z = ray.origin.z;
-    r.dir_x = ray.direction.x, r.dir_y = ray.direction.y, r.dir_z = ray.direction.z;
-    r.tnear = 0.0f, r.tfar = ray.tMax, r.time = 0.0f;
-    r.mask = 0xFFFFFFFFu, r.id = 0, r.flags = 0;
-    rtcOccluded1(scene, &context, &r);
-    return r.tfar < 0.0f;
-  }
-};
-
-Vec3 cosineDirection(const Vec3& normal, float u1, float u2) {
-  const float r = std::sqrt(u1), phi = 2.0f * kPi * u2;
-  return Frame(normal).toWorld(Vec3(r * std::cos(phi), r * std::sin(phi), std::sqrt(1.0f - u1)));
-}
-
-// Camera rays through jittered pixel positions, and from their hits cosine-distributed rays.
-struct RaySets {
-  std::vector<Ray> primary;
-  std::vector<Ray> incoherent;
-};
-
-RaySets makeRays(const Scene& scene, const RayTracer& tracer, int width, int height) {
-  RaySets sets;
-  const Camera camera(scene, width, height);
-  Pcg32 rng(1);
-  RayCounters ignored;
-  for (int y = 0; y < height; ++y) {
-    for (int x = 0; x < width; ++x) {
-      const Ray ray = camera.generateRay(Vec2(x + rng.nextFloat(), y + rng.nextFloat()));
-      sets.primary.push_back(ray);
-      if (const auto hit = tracer.intersect(ray, RayKind::Primary, ignored))
-        sets.incoherent.push_back(
-            hit->spawnRay(cosineDirection(hit->normal, rng.nextFloat(), rng.nextFloat())));
-    }
-  }
-  return sets;
-}
 
 // A diffuse bounce through the renderer: camera ray, then one cosine-distributed closest-hit ray.
 class DiffuseBounceIntegrator : public Integrator {
@@ -139,31 +47,6 @@ const bool registered = registerIntegrator(
      {},
      SamplerType::Independent,
      [](const IntegratorSetup&) { return std::make_unique<DiffuseBounceIntegrator>(); }});
-
-// Steady-state rate of the renderer: one warm-up pass (first touch of the film and tile memory),
-// then the best of `repeats` timed passes, `spp` samples per pixel each.
-double rendererSeconds(const Scene& scene, const RayTracer& tracer, const std::string& name,
-                       const std::map<std::string, std::string>& params, int width, uint32_t spp,
-                       int repeats, uint64_t* raysPerPass) {
-  const IntegratorInfo& info = findIntegrator(name);
-  RenderRecipe recipe;
-  recipe.integrator = name;
-  recipe.params = resolveParams(name, info.params, params);
-  recipe.settings.width = recipe.settings.height = width;
-  recipe.settings.samplesPerPixel = spp * (1 + repeats);
-  recipe.settings.samplesPerPass = spp;
-  recipe.settings.sampler = info.defaultSampler;
-  RenderSession session(tracer, Camera(scene, width, width), recipe);
-  Renderer& renderer = session.renderer();
-  renderer.renderPass();
-  double best = 1e30;
-  for (int i = 0; i < repeats; ++i) {
-    const uint64_t before = renderer.stats().counters.totalRays();
-    best = std::min(best, secondsOf([&] { renderer.renderPass(); }));
-    *raysPerPass = renderer.stats().counters.totalRays() - before;
-  }
-  return best;
-}
 
 int benchRays(const std::string& scenePath, int width, int repeats) {
   const Scene scene = loadScene(scenePath);
@@ -222,35 +105,6 @@ int benchRays(const std::string& scenePath, int width, int repeats) {
   return 0;
 }
 
-// Every ray one pass of the stage traces, recorded from a single-threaded render.
-std::vector<LoggedRay> recordRays(const Scene& scene, RayTracer& tracer, const std::string& name,
-                                  const std::map<std::string, std::string>& params, int width,
-                                  uint32_t spp) {
-  std::vector<LoggedRay> log;
-  tracer.setRayLog(&log);
-  const IntegratorInfo& info = findIntegrator(name);
-  RenderRecipe recipe;
-  recipe.integrator = name;
-  recipe.params = resolveParams(name, info.params, params);
-  recipe.settings.width = recipe.settings.height = width;
-  recipe.settings.samplesPerPixel = recipe.settings.samplesPerPass = spp;
-  recipe.settings.threads = 1;
-  recipe.settings.sampler = info.defaultSampler;
-  runRender(tracer, Camera(scene, width, width), recipe);
-  tracer.setRayLog(nullptr);
-  return log;
-}
-
-double replaySeconds(const RawEmbree& raw, const std::vector<LoggedRay>& log, int repeats) {
-  std::vector<char> sink(log.size());
-  return bestSeconds(repeats, [&] {
-    tbb::parallel_for(size_t(0), log.size(), [&](size_t i) {
-      const LoggedRay& r = log[i];
-      sink[i] = r.occlusionOnly ? raw.occluded(r.ray) : raw.intersect(r.ray) < kInfinity;
-    });
-  });
-}
-
 int benchStages(const std::string& scenePath, int width, int repeats) {
   const Scene scene = loadScene(scenePath);
   RayTracer tracer(scene);
@@ -259,26 +113,17 @@ int benchStages(const std::string& scenePath, int width, int repeats) {
       "scene %s, %dx%d, %d threads; renderer: best of %d passes after a warm-up;\n"
       "raw: the same pass's rays, recorded, traced by rtcIntersect1/rtcOccluded1\n\n",
       scenePath.c_str(), width, width, tbb::info::default_concurrency(), repeats);
-  struct Case {
-    const char* name;
-    std::map<std::string, std::string> params;
-    uint32_t spp;
-  };
-  const Case cases[] = {
-      {"stage1@ref", {}, 4}, {"stage2@ref", {}, 2}, {"stage3@ref", {}, 4},
-      {"stage4@ref", {}, 1}, {"stage5@ref", {}, 2}, {"stage5@ref", {{"nee", "off"}}, 2},
-  };
   std::printf("%-22s %14s %12s %12s %8s\n", "integrator", "rays/sample", "Mrays/s", "raw Mrays/s",
               "ratio");
-  for (const Case& c : cases) {
+  for (const StageCase& c : kStageCases) {
     uint64_t rays = 0;
     const double seconds =
-        rendererSeconds(scene, tracer, c.name, c.params, width, c.spp, repeats, &rays);
-    const std::vector<LoggedRay> log = recordRays(scene, tracer, c.name, c.params, width, c.spp);
+        rendererSeconds(scene, tracer, c.integrator, c.params, width, c.spp, repeats, &rays);
+    const std::vector<LoggedRay> log =
+        recordRays(scene, tracer, c.integrator, c.params, width, c.spp);
     const double rawSeconds = replaySeconds(raw, log, repeats);
     const double mrays = rays / seconds * 1e-6, rawMrays = log.size() / rawSeconds * 1e-6;
-    std::string label = c.name;
-    for (const auto& [key, value] : c.params) label += " " + key + "=" + value;
+    const std::string label = caseLabel(c.integrator, c.params);
     std::printf("%-22s %14.2f %12.2f %12.2f %8.2f\n", label.c_str(),
                 double(rays) / (double(width) * width * c.spp), mrays, rawMrays, mrays / rawMrays);
   }
@@ -305,13 +150,6 @@ int benchStages(const std::string& scenePath, int width, int repeats) {
   return 0;
 }
 
-long residentBytes() {
-  std::ifstream statm("/proc/self/statm");
-  long pages = 0, resident = 0;
-  statm >> pages >> resident;
-  return resident * sysconf(_SC_PAGESIZE);
-}
-
 int benchMemory(const std::string& scenePath) {
   const long before = residentBytes();
   Scene scene;
@@ -333,30 +171,134 @@ int benchMemory(const std::string& scenePath) {
   return 0;
 }
 
+// ---- Command line ----
+
+constexpr const char* kUsage =
+    "usage: pathway_bench rays   [scene] [--width W] [--repeats R]\n"
+    "       pathway_bench stages [scene] [--width W] [--repeats R]\n"
+    "       pathway_bench memory SCENE\n"
+    "       pathway_bench growth [scene] [--out DIR] [--max-triangles N] [--width W] "
+    "[--repeats R]\n"
+    "  rays:   raw Embree vs the framework, rays/s (default scene: the Cornell box; width 512,\n"
+    "          best of 5 repeats; growth: best of 10)\n"
+    "  stages: every stage vs raw Embree on the same rays\n"
+    "  memory: resident bytes per triangle and BVH build time of a scene\n"
+    "  growth: how cost grows, in one run: stages vs raw Embree, 1 vs 2 threads, cost vs spp,\n"
+    "          BVH build time and bytes per triangle for generated grids of 10k to N triangles\n"
+    "          (N from 10k to 100M, default 10M); --out DIR also writes the tables as CSV\n"
+    "          (scripts/draw_growth.py DIR draws them)\n";
+
+// A mistake on the command line: one message, the usage is not repeated.
+struct UsageError : PathwayError {
+  using PathwayError::PathwayError;
+};
+
+// A whole number in [minValue, maxValue]; `suffixes` also takes 20k and 10M.
+uint64_t parseCount(const std::string& option, const std::string& text, uint64_t minValue,
+                    uint64_t maxValue, bool suffixes = false) {
+  uint64_t scale = 1;
+  std::string digits = text;
+  if (suffixes && !digits.empty() && (digits.back() == 'k' || digits.back() == 'M')) {
+    scale = digits.back() == 'k' ? 1'000 : 1'000'000;
+    digits.pop_back();
+  }
+  const bool wellFormed =
+      !digits.empty() && digits.find_first_not_of("0123456789") == std::string::npos;
+  // Past 12 digits the value is out of every range here, and could overflow.
+  const uint64_t value = !wellFormed          ? 0
+                         : digits.size() > 12 ? UINT64_MAX
+                                              : std::stoull(digits) * scale;
+  const std::string got = ", got '" + text + "'";
+  if (!wellFormed)
+    throw UsageError(option + " expects a whole number" +
+                     (suffixes ? " (20k and 10M also work)" : "") + got);
+  if (value < minValue)
+    throw UsageError(option + " must be at least " + std::to_string(minValue) + got);
+  if (value > maxValue)
+    throw UsageError(option + " must be at most " + std::to_string(maxValue) + got);
+  return value;
+}
+
+struct Arguments {
+  std::string mode;
+  std::optional<std::string> scene;
+  std::optional<int> width, repeats;
+  std::optional<std::string> outDir;
+  std::optional<uint64_t> maxTriangles;
+};
+
+Arguments parseArguments(int argc, char** argv) {
+  Arguments args;
+  args.mode = argv[1];
+  if (args.mode != "rays" && args.mode != "stages" && args.mode != "memory" &&
+      args.mode != "growth")
+    throw UsageError("unknown mode '" + args.mode + "' (rays, stages, memory or growth)");
+  for (int i = 2; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw UsageError(arg + " needs a value");
+      return argv[++i];
+    };
+    auto onlyFor = [&](const std::string& mode) {
+      if (args.mode != mode) throw UsageError(arg + " is an option of `" + mode + "` only");
+    };
+    if (arg == "--width") {
+      args.width = static_cast<int>(
+          parseCount(arg, value(), 1, static_cast<uint64_t>(setting::kWidth.maxValue)));
+    } else if (arg == "--repeats") {
+      args.repeats = static_cast<int>(parseCount(arg, value(), 1, 1000));
+    } else if (arg == "--out") {
+      onlyFor("growth");
+      args.outDir = value();
+    } else if (arg == "--max-triangles") {
+      onlyFor("growth");
+      args.maxTriangles = parseCount(arg, value(), kMinGrowthTriangles, kMaxGrowthTriangles, true);
+    } else if (arg.rfind("--", 0) == 0) {
+      throw UsageError("unknown option " + arg);
+    } else if (args.scene) {
+      throw UsageError("one scene only, got '" + *args.scene + "' and '" + arg + "'");
+    } else {
+      args.scene = arg;
+    }
+  }
+  if (args.mode == "memory" && !args.scene) throw UsageError("memory needs a scene file");
+  if (args.mode == "memory" && (args.width || args.repeats))
+    throw UsageError("memory takes a scene only");
+  return args;
+}
+
+int run(const Arguments& args) {
+  const std::string scene = args.scene.value_or(PATHWAY_DEFAULT_SCENE);
+  if (args.mode == "rays")
+    return benchRays(scene, args.width.value_or(512), args.repeats.value_or(5));
+  if (args.mode == "stages")
+    return benchStages(scene, args.width.value_or(512), args.repeats.value_or(5));
+  if (args.mode == "memory") return benchMemory(scene);
+  GrowthOptions growth;
+  growth.scene = scene;
+  growth.width = args.width.value_or(growth.width);
+  growth.repeats = args.repeats.value_or(growth.repeats);
+  growth.outDir = args.outDir.value_or("");
+  growth.maxTriangles = args.maxTriangles.value_or(growth.maxTriangles);
+  return benchGrowth(growth);
+}
+
 }  // namespace
-}  // namespace pathway
+}  // namespace pathway::bench
 
 int main(int argc, char** argv) {
+  using namespace pathway::bench;
+  if (argc < 2) {
+    std::fputs(kUsage, stderr);
+    return 2;
+  }
   try {
-    const std::string mode = argc > 1 ? argv[1] : "";
-    std::string scene = PATHWAY_DEFAULT_SCENE;
-    int width = 512, repeats = 5;
-    for (int i = 2; i < argc; ++i) {
-      const std::string arg = argv[i];
-      if (arg == "--width" && i + 1 < argc)
-        width = std::stoi(argv[++i]);
-      else if (arg == "--repeats" && i + 1 < argc)
-        repeats = std::stoi(argv[++i]);
-      else
-        scene = arg;
-    }
-    if (mode == "rays") return pathway::benchRays(scene, width, repeats);
-    if (mode == "memory") return pathway::benchMemory(scene);
-    if (mode == "stages") return pathway::benchStages(scene, width, repeats);
-    std::fprintf(stderr,
-                 "usage: pathway_bench rays [scene] [--width W] [--repeats R]\n"
-                 "       pathway_bench stages [scene] [--width W] [--repeats R]\n"
-                 "       pathway_bench memory SCENE\n");
+    // The growth table's own children: `growth-grid-child CELLS WIDTH REPEATS`, not for people.
+    if (argv[1] == std::string(kGrowthChildMode) && argc == 5)
+      return growthGridChild(std::stoi(argv[2]), std::stoi(argv[3]), std::stoi(argv[4]));
+    return run(parseArguments(argc, argv));
+  } catch (const UsageError& error) {
+    std::fprintf(stderr, "pathway_bench: %s\n", error.what());
     return 2;
   } catch (const std::exception& error) {
     std::fprintf(stderr, "pathway_bench: error: %s\n", error.what());

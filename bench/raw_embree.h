@@ -1,0 +1,72 @@
+// Raw Embree: the scene's own vertex and index arrays in a BVH of its own, traced with
+// rtcIntersect1/rtcOccluded1 and nothing of the framework in between. The yardstick the
+// benchmarks hold the framework's ray queries against.
+#pragma once
+
+#include <embree3/rtcore.h>
+
+#include "core/error.h"
+#include "scene/scene.h"
+
+namespace pathway::bench {
+
+class RawEmbree {
+ public:
+  explicit RawEmbree(const Scene& s) {
+    if (!device_) throw PathwayError("could not create an Embree device");
+    // The same flags as RayTracer, so that both trace the same kind of BVH.
+    rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_COMPACT);
+    for (uint32_t i = 0; i < s.meshes.size(); ++i) {
+      RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+      rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                 s.meshes[i].positions.data(), 0, sizeof(Vec3),
+                                 s.meshes[i].positions.size());
+      rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                 s.meshes[i].triangles.data(), 0, sizeof(glm::uvec3),
+                                 s.meshes[i].triangles.size());
+      rtcCommitGeometry(g);
+      rtcAttachGeometryByID(scene_, g, i);
+      rtcReleaseGeometry(g);
+    }
+    rtcCommitScene(scene_);
+  }
+  ~RawEmbree() {
+    rtcReleaseScene(scene_);
+    rtcReleaseDevice(device_);
+  }
+  RawEmbree(const RawEmbree&) = delete;
+  RawEmbree& operator=(const RawEmbree&) = delete;
+
+  // Returns the hit distance, or infinity.
+  float intersect(const Ray& ray) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh;
+    rh.ray = toEmbree(ray);
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene_, &context, &rh);
+    return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? kInfinity : rh.ray.tfar;
+  }
+  bool occluded(const Ray& ray) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay r = toEmbree(ray);
+    rtcOccluded1(scene_, &context, &r);
+    return r.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
+  }
+
+ private:
+  static RTCRay toEmbree(const Ray& ray) {
+    RTCRay r;
+    r.org_x = ray.origin.x, r.org_y = ray.origin.y, r.org_z = ray.origin.z;
+    r.dir_x = ray.direction.x, r.dir_y = ray.direction.y, r.dir_z = ray.direction.z;
+    r.tnear = 0.0f, r.tfar = ray.tMax, r.time = 0.0f;
+    r.mask = 0xFFFFFFFFu, r.id = 0, r.flags = 0;
+    return r;
+  }
+
+  RTCDevice device_ = rtcNewDevice(nullptr);
+  RTCScene scene_ = rtcNewScene(device_);
+};
+
+}  // namespace pathway::bench
