@@ -135,7 +135,7 @@ def convergence(folder, _args):
     by_time.set_title("error against time", fontsize=10)
     by_rays.set_title("error against rays", fontsize=10)
     handles, labels = by_time.get_legend_handles_labels()
-    by_rays.legend(handles, labels, fontsize=8, loc="lower left", framealpha=0.9)
+    by_rays.legend(handles, labels, fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0))
     seeds = summary["seeds"]
     figure.suptitle(
         (summary.get("title") or "Convergence") +
@@ -267,9 +267,7 @@ def sweep(folder, args):
                    color=colour, label=group)
     xs = sorted({line["x"] for line in summary["lines"]})
     for axis in (cost, equal):
-        axis.set_xscale("log")
-        axis.set_yscale("log")
-        axis.grid(True, which="both", color="0.92")
+        log_axes(axis)
         axis.set_xlabel(args.x_label or "x")
     if args.guide_slope is not None:
         anchor = [line for line in summary["lines"] if line["x"] == xs[-1]]
@@ -295,17 +293,18 @@ def filters(folder, args):
         rows = list(csv.DictReader(f))
     names = [name for name in rows[0] if name != "x"]
     looks = [line for line in summary["lines"] if line.get("reference")]
-    figure = plt.figure(figsize=(13, 8))
-    grid = figure.add_gridspec(2, max(len(looks), 1), height_ratios=[1.0, 1.15], hspace=0.3)
+    figure = plt.figure(figsize=(13, 11))
+    grid = figure.add_gridspec(3, max(len(looks), 1), height_ratios=[1.0, 1.1, 0.9], hspace=0.35)
     profile = figure.add_subplot(grid[0, :])
     x = np.array([float(row["x"]) for row in rows])
-    for index, name in enumerate(names):
+    colour_of = {name: COLOURS[index % len(COLOURS)] for index, name in enumerate(names)}
+    for name in names:
         values = np.array([float(row[name]) for row in rows])
-        profile.plot(x, values, color=COLOURS[index % len(COLOURS)], label=name, linewidth=1.6)
+        profile.plot(x, values, color=colour_of[name], label=name, linewidth=1.6)
         if values.min() < 0:
             lowest = int(values.argmin())
             profile.annotate(f"{name}: min {values[lowest]:.4f} at |x| = {abs(x[lowest]):.3f}",
-                             (x[lowest], values[lowest]), xytext=(20, -28),
+                             (x[lowest], values[lowest]), xytext=(30, 45),
                              textcoords="offset points", fontsize=8,
                              arrowprops={"arrowstyle": "->", "color": "0.4"})
     profile.axhline(0, color="0.3", linewidth=0.7)
@@ -315,18 +314,36 @@ def filters(folder, args):
                       fontsize=10)
     profile.legend(fontsize=8)
     profile.grid(True, color="0.92")
-    crop = args.crop
+    scanline = figure.add_subplot(grid[2, :])
+    rows_of = {}
     for index, line in enumerate(looks):
-        image = plt.imread(line["reference"]["png"])
+        image = plt.imread(line["reference"]["png"])[..., :3]
         height, width = image.shape[:2]
-        cx, cy, size = crop if crop else (width // 2, height // 2, min(width, height) // 2)
-        cut = image[max(0, cy - size // 2):cy + size // 2, max(0, cx - size // 2):cx + size // 2]
+        cx, cy, size = args.crop if args.crop else (width // 2, height // 2,
+                                                    min(width, height) // 2)
+        top, left = max(0, cy - size // 2), max(0, cx - size // 2)
+        cut = image[top:cy + size // 2, left:cx + size // 2]
+        row = min(cut.shape[0] - 1, cut.shape[0] * 3 // 4)  # below the thin diagonal line
         axis = figure.add_subplot(grid[1, index])
         axis.imshow(cut, interpolation="nearest")
+        axis.axhline(row, color="white", linewidth=0.6, linestyle=":")
         axis.set_title(f"{line['label']}\n{line['reference']['spp']} spp, "
-                       f"{size}×{size} px crop", fontsize=9)
+                       f"{cut.shape[1]}×{cut.shape[0]} px crop", fontsize=9)
         axis.set_xticks([])
         axis.set_yticks([])
+        rows_of[line["label"]] = (np.arange(cut.shape[1]) + left, cut[row].mean(axis=1))
+    # Each filter's row minus the box's: blur and ringing as signed deviations from hard edges.
+    baseline = rows_of.get("box")
+    for label, (columns, values) in rows_of.items():
+        shown = values - baseline[1] if baseline is not None else values
+        scanline.step(columns, shown, where="mid", color=colour_of.get(label, "0.3"),
+                      label=label, linewidth=1.4)
+    scanline.set_xlabel("pixel column")
+    scanline.set_ylabel("mean of R, G, B (sRGB)" + (" minus box" if baseline is not None else ""))
+    scanline.set_title("along the dotted row: the Gaussian blurs edges most; Mitchell's negative "
+                       "lobes darken the pixels beside a bright edge (ringing)", fontsize=10)
+    scanline.legend(fontsize=8, ncol=len(looks))
+    scanline.grid(True, color="0.92")
     figure.suptitle((summary.get("title") or "Pixel filters") +
                     "\nlooks: converged renders, pixels magnified without smoothing", fontsize=11)
     save(figure, folder, "filters")
@@ -356,7 +373,7 @@ def ratio(folder, args):
     if a is None or b is None:
         sys.exit(f"draw_chart.py: no error {where} for {args.a!r} or {args.b!r}")
     name = {"rmse": "RMSE", "rel_mse": "relMSE"}[metric]
-    print(f"{name} {where}: {args.a} {fmt(a)}, {args.b} {fmt(b)}, ratio {a / b:.3f}")
+    print(f"{name} {where}: {args.a} {fmt(a)}, {args.b} {fmt(b)}, ratio {a / b:.3g}")
 
 
 def main():

@@ -10,9 +10,8 @@
 int main(int argc, char** argv) {
   CLI::App app{"Pathway: from pixel filtering to path tracing, one stage at a time."};
   app.require_subcommand(1);
-  std::vector<pathway::Command> commands = {pathway::addRenderCommand(app),
-                                            pathway::addGradeCommand(app),
-                                            pathway::addChartCommand(app)};
+  std::vector<pathway::Command> commands = {
+      pathway::addRenderCommand(app), pathway::addGradeCommand(app), pathway::addChartCommand(app)};
 #ifdef PATHWAY_HAS_VIEWER
   commands.push_back(pathway::addViewCommand(app));
 #endif
