@@ -4,6 +4,7 @@
 //   pathway_bench stages [scene] [--width W] [--repeats R]   each stage vs raw Embree, same rays
 //   pathway_bench memory SCENE                                resident bytes per triangle, BVH
 //                                                             build
+//   pathway_bench startup [--repeats R]                    start-up and time to the first ray
 //   pathway_bench growth [scene] [--out DIR] [--max-triangles N] [--width W] [--repeats R]
 //                                       how cost grows: the tables of bench/growth.h, as CSV too
 #include <tbb/info.h>
@@ -22,6 +23,7 @@
 #include "render/render_session.h"
 #include "render/render_settings.h"
 #include "scene/gltf_loader.h"
+#include "startup.h"
 
 namespace pathway::bench {
 namespace {
@@ -177,12 +179,15 @@ constexpr const char* kUsage =
     "usage: pathway_bench rays   [scene] [--width W] [--repeats R]\n"
     "       pathway_bench stages [scene] [--width W] [--repeats R]\n"
     "       pathway_bench memory SCENE\n"
+    "       pathway_bench startup [--repeats R]\n"
     "       pathway_bench growth [scene] [--out DIR] [--max-triangles N] [--width W] "
     "[--repeats R]\n"
     "  rays:   raw Embree vs the framework, rays/s (default scene: the Cornell box; width 512,\n"
     "          best of 5 repeats; growth: best of 10)\n"
     "  stages: every stage vs raw Embree on the same rays\n"
     "  memory: resident bytes per triangle and BVH build time of a scene\n"
+    "  startup: how long `pathway` commands take to start and to reach their first ray (median\n"
+    "           of 7 runs)\n"
     "  growth: how cost grows, in one run: stages vs raw Embree, 1 vs 2 threads, cost vs spp,\n"
     "          BVH build time and bytes per triangle for generated grids of 10k to N triangles\n"
     "          (N from 10k to 100M, default 10M); --out DIR also writes the tables as CSV\n"
@@ -231,8 +236,8 @@ Arguments parseArguments(int argc, char** argv) {
   Arguments args;
   args.mode = argv[1];
   if (args.mode != "rays" && args.mode != "stages" && args.mode != "memory" &&
-      args.mode != "growth")
-    throw UsageError("unknown mode '" + args.mode + "' (rays, stages, memory or growth)");
+      args.mode != "growth" && args.mode != "startup")
+    throw UsageError("unknown mode '" + args.mode + "' (rays, stages, memory, growth or startup)");
   for (int i = 2; i < argc; ++i) {
     const std::string arg = argv[i];
     auto value = [&]() -> std::string {
@@ -274,6 +279,10 @@ int run(const Arguments& args) {
   if (args.mode == "stages")
     return benchStages(scene, args.width.value_or(512), args.repeats.value_or(5));
   if (args.mode == "memory") return benchMemory(scene);
+  if (args.mode == "startup") {
+    if (args.scene || args.width) throw UsageError("startup takes --repeats only");
+    return benchStartup(args.repeats.value_or(7));
+  }
   GrowthOptions growth;
   growth.scene = scene;
   growth.width = args.width.value_or(growth.width);

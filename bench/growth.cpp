@@ -1,15 +1,10 @@
 #include "growth.h"
 
 #include <embree3/rtcore.h>
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -27,8 +22,7 @@
 #include "render/render_session.h"
 #include "sampling/pcg32.h"
 #include "scene/gltf_loader.h"
-
-extern char** environ;
+#include "spawn.h"
 
 namespace pathway::bench {
 namespace {
@@ -336,44 +330,14 @@ struct GridResult {
 
 // Runs this program as a child that measures one grid; its stdout comes back through a pipe.
 GridResult measureGridInChild(int cells, int width, int repeats) {
-  int pipeEnds[2];
-  if (::pipe2(pipeEnds, O_CLOEXEC) != 0)
-    throw PathwayError(std::string("cannot create a pipe: ") + std::strerror(errno));
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, pipeEnds[1], STDOUT_FILENO);
-  const std::vector<std::string> arguments = {currentExecutable(), kGrowthChildMode,
-                                              std::to_string(cells), std::to_string(width),
-                                              std::to_string(repeats)};
-  std::vector<char*> argv;
-  for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  const int error = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  ::close(pipeEnds[1]);
-  if (error != 0) {
-    ::close(pipeEnds[0]);
-    throw PathwayError("cannot start " + arguments[0] + ": " + std::strerror(error));
-  }
-  std::string output;
-  char buffer[4096];
-  for (;;) {
-    const ssize_t count = ::read(pipeEnds[0], buffer, sizeof buffer);
-    if (count > 0) output.append(buffer, static_cast<size_t>(count));
-    if (count == 0 || (count < 0 && errno != EINTR)) break;
-  }
-  ::close(pipeEnds[0]);
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  ChildOutcome outcome;
-  outcome.started = true;
-  if (WIFEXITED(status)) outcome.exitCode = WEXITSTATUS(status);
-  if (WIFSIGNALED(status)) outcome.signal = WTERMSIG(status);
+  const SpawnedRun run =
+      spawnCapturingStdout({currentExecutable(), kGrowthChildMode, std::to_string(cells),
+                            std::to_string(width), std::to_string(repeats)});
+  const ChildOutcome& outcome = run.outcome;
   if (!outcome.succeeded())
     throw PathwayError("measuring the grid of " + std::to_string(2ull * cells * cells) +
                        " triangles: its child process " + outcome.describe(0.0));
+  const std::string& output = outcome.output;
   GridResult result;
   std::istringstream words(output);
   for (std::string word; words >> word;) {

@@ -47,6 +47,15 @@ class Cli : public ::testing::Test {
 
 const std::string kScene = std::string(PATHWAY_SCENES_DIR) + "/cornell_box.gltf";
 
+// OpenImageIO's ~250 libraries are loaded only when an image is read or written
+// (framework/io/raster.h): the program must not link them, or every command pays ~0.2 s.
+TEST(CliStartUp, TheProgramDoesNotLinkTheImageLibraries) {
+  const Outcome outcome = test::runCommand("ldd " PATHWAY_BINARY);
+  ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+  EXPECT_EQ(outcome.output.find("OpenImageIO"), std::string::npos) << outcome.output;
+  EXPECT_EQ(outcome.output.find("opencv"), std::string::npos) << outcome.output;
+}
+
 TEST_F(Cli, MissingSceneFileIsNamed) {
   expectRefused("render " + path("nowhere.gltf"), "nowhere.gltf");
 }

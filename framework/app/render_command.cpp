@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "app/launch_clock.h"
 #include "app/progress_bar.h"
 #include "app/shared_options.h"
 #include "core/error.h"
@@ -24,6 +25,7 @@ struct RenderOptions {
   float exposure = setting::kExposure.defaultValue;
   bool list = false;
   bool quiet = false;
+  bool timings = false;
 };
 
 void listIntegrators() {
@@ -41,7 +43,7 @@ void listIntegrators() {
   }
 }
 
-int run(const RenderOptions& options) {
+int run(const RenderOptions& options, const LaunchClock& clock) {
   if (options.list) {
     listIntegrators();
     return 0;
@@ -55,22 +57,33 @@ int run(const RenderOptions& options) {
   s.samplesPerPass = std::max(1u, options.spp / 16);
   for (const std::string& output : options.outputs) checkImagePath(output);
 
+  const double startMs = clock.milliseconds();
   const Scene scene = loadScene(options.choices.scene, {options.choices.strictScene});
+  const double sceneMs = clock.milliseconds();
   s.width = options.width;
   s.height = options.height;
   if (s.height == 0) s.height = scene.imageHeight(options.width);
   const RayTracer tracer(scene);
+  const double bvhMs = clock.milliseconds();
+  double firstRayMs = 0.0;
 
   ProgressBar progress(!options.quiet);
   const RenderResult result = runRender(tracer, recipe, [&](const RenderStats& stats) {
+    if (firstRayMs == 0.0) firstRayMs = clock.milliseconds() - stats.seconds * 1e3;
     const std::string label =
         std::to_string(stats.samplesPerPixel) + "/" + std::to_string(s.samplesPerPixel) + " spp";
     progress.update(static_cast<double>(stats.samplesPerPixel) / s.samplesPerPixel, label.c_str());
   });
   progress.finish();
 
+  const double renderedMs = clock.milliseconds();
   for (const std::string& output : options.outputs)
     writeImageFile(output, result.images, result.metadata, options.exposure);
+  if (options.timings)
+    std::printf(
+        "timings (ms %s): command starts %.1f, scene read %.1f, BVH built %.1f, first ray %.1f, "
+        "last ray %.1f, images written %.1f\n",
+        clock.origin(), startMs, sceneMs, bvhMs, firstRayMs, renderedMs, clock.milliseconds());
 
   const RayCounters& c = result.stats.counters;
   const double seconds = result.stats.seconds;
@@ -126,7 +139,11 @@ Command addRenderCommand(CLI::App& app) {
   addSettingOption(*render, setting::kExposure, options->exposure);
   render->add_flag("--list", options->list, "List the integrators and their parameters, then exit");
   render->add_flag("-q,--quiet", options->quiet, "No progress bar or summary");
-  return {render, [options] { return run(*options); }};
+  render->add_flag("--timings", options->timings,
+                   "Print when each step ended (ms since launch: see pathway_bench startup)");
+  // Started here, as early as the program can: the clock of --timings.
+  auto clock = std::make_shared<LaunchClock>();
+  return {render, [options, clock] { return run(*options, *clock); }};
 }
 
 }  // namespace pathway

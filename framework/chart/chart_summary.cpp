@@ -17,14 +17,16 @@ double median(std::vector<double> values) {
   return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
-// The fit over the upper half of the spp exponents: the asymptotic rate, not the start-up.
+// The fit over the upper half of the spp exponents (at least the last two points): the
+// asymptotic rate, not the start-up.
 std::optional<LogLogFit> fitLine(const std::vector<ChartPoint>& points,
                                  const std::function<double(const ChartPoint&)>& x,
                                  const std::function<std::optional<double>(const ChartPoint&)>& y) {
   if (points.empty()) return std::nullopt;
   const uint32_t maxSpp = points.back().spp;
   const int k = static_cast<int>(std::lround(std::log2(double(maxSpp))));
-  const uint32_t fromSpp = 1u << ((k + 1) / 2);
+  // At least the last two points, so that a short line still has a slope.
+  const uint32_t fromSpp = std::min(1u << ((k + 1) / 2), std::max(1u, maxSpp / 2));
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
   int n = 0;
   for (const ChartPoint& p : points) {
@@ -42,21 +44,25 @@ std::optional<LogLogFit> fitLine(const std::vector<ChartPoint>& points,
   return fit;
 }
 
-// y at `at` along the measured points (x ascending by spp), else from the fit.
-std::optional<ReadOff> readOff(const std::vector<ChartPoint>& points, double at,
+// y at `at` along the measured points, else from the fit. The points are taken in order of x:
+// on a busy machine a render with more samples can take less time than the one before it.
+std::optional<ReadOff> readOff(std::vector<ChartPoint> points, double at,
                                const std::function<double(const ChartPoint&)>& x,
                                const std::function<std::optional<double>(const ChartPoint&)>& y,
                                const std::optional<LogLogFit>& fit) {
+  std::stable_sort(points.begin(), points.end(),
+                   [&](const ChartPoint& a, const ChartPoint& b) { return x(a) < x(b); });
   for (size_t i = 0; i + 1 < points.size(); ++i) {
     const double x0 = x(points[i]), x1 = x(points[i + 1]);
     const auto y0 = y(points[i]), y1 = y(points[i + 1]);
-    if (!y0 || !y1 || !(*y0 > 0.0) || !(*y1 > 0.0) || !(x0 > 0.0) || !(x1 > x0)) continue;
+    if (!y0 || !y1 || !(*y0 > 0.0) || !(*y1 > 0.0) || !(x0 > 0.0) || !(x1 >= x0)) continue;
     if (at < x0 || at > x1) continue;
+    if (x1 == x0) return ReadOff{std::sqrt(*y0 * *y1), false};
     const double t = std::log(at / x0) / std::log(x1 / x0);
     return ReadOff{std::exp((1 - t) * std::log(*y0) + t * std::log(*y1)), false};
   }
   if (points.size() == 1 && x(points[0]) == at && y(points[0])) return ReadOff{*y(points[0])};
-  if (!fit || fit->slope > kSteepestUnextrapolatedSlope) return std::nullopt;
+  if (!fit) return std::nullopt;
   return ReadOff{fit->at(at), true};
 }
 

@@ -39,8 +39,8 @@ struct ReadOff {
   bool atMost = false;  // the line was already there at its first point: the value is a bound
 };
 
-// Fits flatter than this are not extrapolated: a line that barely falls says nothing about when
-// it would reach a far-off error.
+// The time to the target relMSE is not extrapolated along fits flatter than this: a line that
+// barely falls says nothing about when it would reach a far-off error.
 inline constexpr double kSteepestUnextrapolatedSlope = -0.5;
 
 struct ChartLine {

@@ -1,7 +1,5 @@
 #include "io/image_io.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +7,7 @@
 #include <memory>
 
 #include "core/error.h"
+#include "io/raster_files.h"
 
 namespace pathway {
 namespace {
@@ -22,21 +21,22 @@ std::string lowerExtension(const std::string& path) {
   return ext;
 }
 
-// Writes `pixels` (channel-interleaved) through OIIO to a temporary file, then renames it.
-void writeAtomically(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc type,
+// Writes `pixels` (channel-interleaved) to a temporary file, then renames it into place.
+void writeAtomically(const std::string& path, const RasterHeader& header, bool eightBit,
                      const void* pixels) {
   checkImagePath(path);
   const fs::path target(path);
   const fs::path temporary =
       target.parent_path() / (".partial-" + target.stem().string() + target.extension().string());
-  auto out = OIIO::ImageOutput::create(temporary.string());
-  if (!out) throw PathwayError(path + ": cannot write this image format: " + OIIO::geterror());
-  bool ok = out->open(temporary.string(), spec) && out->write_image(type, pixels) && out->close();
-  if (!ok) {
-    const std::string reason = out->geterror();
+  try {
+    writeRaster(temporary.string(), header, eightBit, pixels);
+  } catch (const PathwayError& error) {
     std::error_code ignored;
     fs::remove(temporary, ignored);
-    throw PathwayError(path + ": writing failed: " + reason);
+    // The message names the temporary file; the user asked for `path`.
+    const std::string message = error.what();
+    const size_t colon = message.find(": ");
+    throw PathwayError(path + message.substr(colon == std::string::npos ? 0 : colon));
   }
   std::error_code error;
   fs::rename(temporary, target, error);
@@ -65,44 +65,38 @@ float linearToSrgb(float linear) {
 void writeExr(const std::string& path, const FilmImages& images, const ImageMetadata& metadata) {
   const Image& color = images.color;
   const bool extras = images.variance.width == color.width && images.weight.width == color.width;
-  const int channels = extras ? 7 : 3;
-  OIIO::ImageSpec spec(color.width, color.height, channels, OIIO::TypeDesc::FLOAT);
-  spec.channelnames = {"R", "G", "B"};
+  RasterHeader header{color.width, color.height, {"R", "G", "B"}, metadata};
   if (extras) {
     for (const char* name : {"variance.R", "variance.G", "variance.B", "weight"})
-      spec.channelnames.push_back(name);
+      header.channels.push_back(name);
   }
-  for (const auto& [key, value] : metadata) spec.attribute(key, value);
   std::vector<float> data;
-  data.reserve(color.pixels.size() * channels);
+  data.reserve(color.pixels.size() * header.channels.size());
   for (size_t i = 0; i < color.pixels.size(); ++i) {
     for (int c = 0; c < 3; ++c) data.push_back(color.pixels[i][c]);
     if (!extras) continue;
     for (int c = 0; c < 3; ++c) data.push_back(images.variance.pixels[i][c]);
     data.push_back(images.weight.pixels[i].x);
   }
-  writeAtomically(path, spec, OIIO::TypeDesc::FLOAT, data.data());
+  writeAtomically(path, header, false, data.data());
 }
 
 void writeExrLayers(const std::string& path, const std::map<std::string, const Image*>& layers,
                     const ImageMetadata& metadata) {
   const Image& first = *layers.begin()->second;
-  OIIO::ImageSpec spec(first.width, first.height, static_cast<int>(3 * layers.size()),
-                       OIIO::TypeDesc::FLOAT);
-  spec.channelnames.clear();
+  RasterHeader header{first.width, first.height, {}, metadata};
   for (const auto& [name, image] : layers) {
     if (image->width != first.width || image->height != first.height)
       throw PathwayError(path + ": internal: layer '" + name + "' has another size");
     for (const char* c : {"R", "G", "B"})
-      spec.channelnames.push_back(name.empty() ? std::string(c) : name + "." + c);
+      header.channels.push_back(name.empty() ? std::string(c) : name + "." + c);
   }
-  for (const auto& [key, value] : metadata) spec.attribute(key, value);
   std::vector<float> data;
-  data.reserve(first.pixels.size() * spec.nchannels);
+  data.reserve(first.pixels.size() * header.channels.size());
   for (size_t i = 0; i < first.pixels.size(); ++i)
     for (const auto& entry : layers)
       for (int c = 0; c < 3; ++c) data.push_back(entry.second->pixels[i][c]);
-  writeAtomically(path, spec, OIIO::TypeDesc::FLOAT, data.data());
+  writeAtomically(path, header, false, data.data());
 }
 
 void writePng(const std::string& path, const Image& image, float exposure) {
@@ -113,8 +107,7 @@ void writePng(const std::string& path, const Image& image, float exposure) {
     for (int c = 0; c < 3; ++c)
       data.push_back(
           static_cast<unsigned char>(std::lround(255.0f * linearToSrgb(scale * pixel[c]))));
-  OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
-  writeAtomically(path, spec, OIIO::TypeDesc::UINT8, data.data());
+  writeAtomically(path, {image.width, image.height, {"R", "G", "B"}, {}}, true, data.data());
 }
 
 void writeImageFile(const std::string& path, const FilmImages& images,
@@ -125,31 +118,29 @@ void writeImageFile(const std::string& path, const FilmImages& images,
 }
 
 LoadedImage readImageFile(const std::string& path) {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) throw PathwayError(path + ": cannot read image: " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
-  std::vector<float> data(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
-  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, data.data()))
-    throw PathwayError(path + ": cannot read image: " + in->geterror());
+  const Raster raster = readRaster(path);
+  const RasterHeader& spec = raster.header;
+  const int channels = static_cast<int>(spec.channels.size());
+  const std::vector<float>& data = raster.pixels;
 
   LoadedImage loaded;
   auto channel = [&](const std::string& name) {
-    for (int c = 0; c < spec.nchannels; ++c)
-      if (spec.channelnames[c] == name) return c;
+    for (int c = 0; c < channels; ++c)
+      if (spec.channels[c] == name) return c;
     return -1;
   };
   auto extract = [&](Image& image, int first, int count) {
     image = Image(spec.width, spec.height);
     for (size_t i = 0; i < image.pixels.size(); ++i)
       for (int c = 0; c < 3; ++c)
-        image.pixels[i][c] = data[i * spec.nchannels + first + std::min(c, count - 1)];
+        image.pixels[i][c] = data[i * channels + first + std::min(c, count - 1)];
   };
-  const bool isColor = spec.nchannels >= 3;
+  const bool isColor = channels >= 3;
   extract(loaded.images.color, 0, isColor ? 3 : 1);
   if (channel("variance.R") >= 0) extract(loaded.images.variance, channel("variance.R"), 3);
   if (channel("weight") >= 0) extract(loaded.images.weight, channel("weight"), 1);
-  for (int c = 0; c < spec.nchannels; ++c) {
-    const std::string& name = spec.channelnames[c];
+  for (int c = 0; c < channels; ++c) {
+    const std::string& name = spec.channels[c];
     const size_t dot = name.rfind('.');
     if (dot == std::string::npos || name.substr(dot) != ".R") continue;
     const std::string layer = name.substr(0, dot);
@@ -158,13 +149,10 @@ LoadedImage readImageFile(const std::string& path) {
     Image& image = loaded.layers[layer];
     image = Image(spec.width, spec.height);
     for (size_t i = 0; i < image.pixels.size(); ++i)
-      for (int k = 0; k < 3; ++k) image.pixels[i][k] = data[i * spec.nchannels + index[k]];
+      for (int k = 0; k < 3; ++k) image.pixels[i][k] = data[i * channels + index[k]];
   }
-  for (const OIIO::ParamValue& param : spec.extra_attribs) {
-    const std::string name = param.name().string();
-    if (name.rfind("pathway:", 0) == 0) loaded.metadata[name] = param.get_string();
-  }
-  in->close();
+  for (const auto& [name, value] : spec.attributes)
+    if (name.rfind("pathway:", 0) == 0) loaded.metadata[name] = value;
   return loaded;
 }
 

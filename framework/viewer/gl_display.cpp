@@ -1,10 +1,9 @@
 #include "viewer/gl_display.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <cstring>
 
 #include "core/error.h"
+#include "io/raster_files.h"
 
 namespace pathway {
 
@@ -51,12 +50,11 @@ std::vector<uint8_t> readFramebuffer(const GlFunctions& gl, int width, int heigh
 
 void writeScreenshot(const std::string& path, int width, int height,
                      const std::vector<uint8_t>& rgb) {
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) throw PathwayError(path + ": cannot write a screenshot: " + OIIO::geterror());
-  const OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
-  if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::UINT8, rgb.data()))
-    throw PathwayError(path + ": cannot write a screenshot: " + out->geterror());
-  out->close();
+  try {
+    writeRaster(path, {width, height, {"R", "G", "B"}, {}}, true, rgb.data());
+  } catch (const PathwayError& error) {
+    throw PathwayError(std::string("cannot write a screenshot: ") + error.what());
+  }
 }
 
 }  // namespace pathway

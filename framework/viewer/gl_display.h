@@ -31,7 +31,7 @@ class GlTexture {
 
 // The current framebuffer as RGB, rows top to bottom (GL's are bottom to top).
 std::vector<uint8_t> readFramebuffer(const GlFunctions& gl, int width, int height);
-// Writes 8-bit RGB rows to a PNG (or any format OpenImageIO knows by the extension); throws
+// Writes 8-bit RGB rows to a PNG (or another format the image-file module knows); throws
 // PathwayError on failure.
 void writeScreenshot(const std::string& path, int width, int height,
                      const std::vector<uint8_t>& rgb);

@@ -1,0 +1,31 @@
+// Image files as plain rasters: the only thing the image-file module (image_file_module.cpp, the
+// one part of Pathway linked with OpenImageIO) reads and writes. OpenImageIO pulls in some 250
+// shared libraries whose loading took most of a command's start-up, so the module is loaded on
+// first use (raster_files.h): a render reaches its first ray before any of them is loaded.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pathway {
+
+struct RasterHeader {
+  int width = 0;
+  int height = 0;
+  std::vector<std::string> channels;                            // "R", "G", "B", "variance.R" ...
+  std::vector<std::pair<std::string, std::string>> attributes;  // string metadata
+};
+
+struct Raster {
+  RasterHeader header;
+  std::vector<float> pixels;  // channel-interleaved, rows top to bottom
+};
+
+// The module's two entry points (both built by this project with the same compiler, so C++
+// types may cross). They return false and set `error` instead of throwing.
+using WriteRasterFunction = bool (*)(const char* path, const RasterHeader& header, bool eightBit,
+                                     const void* pixels, std::string& error);
+using ReadRasterFunction = bool (*)(const char* path, Raster& raster, std::string& error);
+
+}  // namespace pathway

@@ -1,0 +1,54 @@
+#include "io/raster_files.h"
+
+#include <dlfcn.h>
+
+#include <mutex>
+
+#include "core/error.h"
+
+namespace pathway {
+namespace {
+
+struct ImageFileModule {
+  WriteRasterFunction write = nullptr;
+  ReadRasterFunction read = nullptr;
+  std::string error;  // why it could not be loaded
+};
+
+// Loaded once, by the first thread that needs it; never unloaded (OpenImageIO keeps threads).
+const ImageFileModule& imageFileModule() {
+  static ImageFileModule module;
+  static std::once_flag loaded;
+  std::call_once(loaded, [] {
+    void* handle = dlopen(PATHWAY_IMAGE_FILE_MODULE, RTLD_NOW | RTLD_LOCAL);
+    if (!handle) {
+      module.error = std::string("cannot load the image-file module: ") + dlerror();
+      return;
+    }
+    module.write = reinterpret_cast<WriteRasterFunction>(dlsym(handle, "pathwayWriteRaster"));
+    module.read = reinterpret_cast<ReadRasterFunction>(dlsym(handle, "pathwayReadRaster"));
+    if (!module.write || !module.read)
+      module.error = "the image-file module " PATHWAY_IMAGE_FILE_MODULE " lacks its functions";
+  });
+  if (!module.error.empty()) throw PathwayError(module.error);
+  return module;
+}
+
+}  // namespace
+
+void writeRaster(const std::string& path, const RasterHeader& header, bool eightBit,
+                 const void* pixels) {
+  std::string error;
+  if (!imageFileModule().write(path.c_str(), header, eightBit, pixels, error))
+    throw PathwayError(path + ": writing failed: " + error);
+}
+
+Raster readRaster(const std::string& path) {
+  Raster raster;
+  std::string error;
+  if (!imageFileModule().read(path.c_str(), raster, error))
+    throw PathwayError(path + ": cannot read image: " + error);
+  return raster;
+}
+
+}  // namespace pathway

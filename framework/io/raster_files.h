@@ -1,0 +1,17 @@
+// Reading and writing rasters through the image-file module (raster.h), loaded on first use.
+#pragma once
+
+#include <string>
+
+#include "io/raster.h"
+
+namespace pathway {
+
+// Writes `pixels` (float, or 8-bit when `eightBit`) to `path` as its extension says. Throws
+// PathwayError naming the path and the reason (also when the module cannot be loaded).
+void writeRaster(const std::string& path, const RasterHeader& header, bool eightBit,
+                 const void* pixels);
+// Throws PathwayError naming the path and the reason.
+Raster readRaster(const std::string& path);
+
+}  // namespace pathway
