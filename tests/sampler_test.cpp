@@ -229,6 +229,21 @@ TEST(Sobol, ScrambleFlipsDependOnHigherBits) {
 
 // Hence it maps the aligned block [0, 2^16) one-to-one onto another aligned block: that is why
 // shuffling the sample index with it keeps the first 2^m samples a whole block of the sequence.
+// The sampler's fast path must give exactly the values of the formula it folds together.
+TEST(Sobol, OwenScrambledFastPathEqualsTheFormula) {
+  Pcg32 rng(17);
+  for (int trial = 0; trial < 20000; ++trial) {
+    const uint32_t index = trial < 1000 ? uint32_t(trial) : rng.nextUInt();
+    const uint32_t shuffleSeed = rng.nextUInt(), valueSeed = rng.nextUInt();
+    for (uint32_t dim = 0; dim < 4; ++dim) {
+      const uint32_t expected = nestedUniformScramble(
+          sobolSample(nestedUniformScramble(index, shuffleSeed), dim), valueSeed);
+      ASSERT_EQ(owenScrambledSobol(reverseBits(index), dim, shuffleSeed, valueSeed), expected)
+          << "index " << index << ", dimension " << dim;
+    }
+  }
+}
+
 TEST(Sobol, ScrambleMapsAlignedBlocksOntoAlignedBlocks) {
   for (uint32_t seed : {0u, 1u, 0xdeadbeefu}) {
     std::set<uint32_t> low;

@@ -146,7 +146,10 @@ RenderRecipe GradingCase::recipe(Variant variant, EarlierStages earlier, uint64_
   s.width = width;
   s.height = height;
   s.samplesPerPixel = s.samplesPerPass = spp;
-  s.sampler = sobol ? SamplerType::Sobol : info->defaultSampler;
+  // Independent samples unless the case is about Sobol' (stage 3): with them, any valid order in
+  // which a student takes dimensions has the variance the reference predicts. (Stage 5 renders
+  // with Sobol' by default; its grading cases do not.)
+  s.sampler = sobol ? SamplerType::Sobol : SamplerType::Independent;
   s.seed = seed;
   s.filter = filter;
   s.filterRadius = filterRadius;

@@ -1,7 +1,7 @@
-// Image files as plain rasters: the only thing the image-file module (image_file_module.cpp, the
-// one part of Pathway linked with OpenImageIO) reads and writes. OpenImageIO pulls in some 250
-// shared libraries whose loading took most of a command's start-up, so the module is loaded on
-// first use (raster_files.h): a render reaches its first ray before any of them is loaded.
+// Image files as plain rasters. EXR goes through OpenEXR (exr_files.h); every other format through
+// the image-file module (image_file_module.cpp, the one part of Pathway linked with OpenImageIO).
+// OpenImageIO pulls in some 250 shared libraries, whose loading took a quarter of a second, so the
+// module is loaded only when such a file is first read or written (raster_files.h).
 #pragma once
 
 #include <string>

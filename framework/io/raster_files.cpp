@@ -2,9 +2,13 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <mutex>
 
 #include "core/error.h"
+#include "io/exr_files.h"
 
 namespace pathway {
 namespace {
@@ -34,16 +38,26 @@ const ImageFileModule& imageFileModule() {
   return module;
 }
 
+bool isExr(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  return extension == ".exr";
+}
+
 }  // namespace
 
 void writeRaster(const std::string& path, const RasterHeader& header, bool eightBit,
                  const void* pixels) {
+  if (isExr(path) && !eightBit)
+    return writeExrRaster(path, header, static_cast<const float*>(pixels));
   std::string error;
   if (!imageFileModule().write(path.c_str(), header, eightBit, pixels, error))
     throw PathwayError(path + ": writing failed: " + error);
 }
 
 Raster readRaster(const std::string& path) {
+  if (isExr(path)) return readExrRaster(path);
   Raster raster;
   std::string error;
   if (!imageFileModule().read(path.c_str(), raster, error))

@@ -1,4 +1,5 @@
-// Reading and writing rasters through the image-file module (raster.h), loaded on first use.
+// Reading and writing rasters: EXR through OpenEXR (exr_files.h), every other format through the
+// image-file module (raster.h), loaded on first use.
 #pragma once
 
 #include <string>

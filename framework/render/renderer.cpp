@@ -79,8 +79,9 @@ void Renderer::renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount
       // Checked per pixel, so even a pass of many samples per pixel stops promptly.
       if (cancel && cancel->load(std::memory_order_relaxed)) return;
       const uint64_t raysBefore = tile.counters.totalRays();
+      const uint64_t pixelKey = sampler_.pixelKey(x, y);
       for (uint32_t index = firstSample; index < firstSample + sampleCount; ++index) {
-        SampleStream samples(sampler_, x, y, index);
+        SampleStream samples(sampler_, pixelKey, index);
         const Vec2 filmPosition = Vec2(x, y) + samples.next2D();
         const Color radiance = integrator_.Li(camera_.generateRay(filmPosition), samples, context);
         if (!isFinite(radiance)) {  // counted and dropped, never written

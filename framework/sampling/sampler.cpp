@@ -6,7 +6,7 @@
 
 #include "core/error.h"
 #include "sampling/hash.h"
-#include "sampling/pcg32.h"
+#include "sampling/pcg32.h"  // toUnitFloat
 #include "sampling/sobol.h"
 
 namespace pathway {
@@ -20,10 +20,8 @@ constexpr uint64_t kIndexShuffleSalt = 0x5348554646u;    // "SHUFF"
 constexpr uint64_t kValueScrambleSalt = 0x5343524du;     // "SCRM"
 constexpr uint64_t kStrataShuffleSalt = 0x535452415441;  // "STRATA"
 
-// 32 random bits for (pixel, index, dimension). Both dimensions of a pair come from one PCG32
-// stream, seeded by a hash of the pair, so any dimension costs O(1): no stepping past the others.
-// Seeds derived from pixelKey, which is already a hash: one more mixing step per value is enough.
 // Sobol': the index shuffle is per block of four dimensions, the value scramble per dimension.
+// Seeds derived from pixelKey, which is already a hash: one more mixing step per value is enough.
 uint32_t sobolShuffleSeed(uint64_t pixelKey, uint32_t dimension) {
   return static_cast<uint32_t>(hashCombine(pixelKey ^ kIndexShuffleSalt, dimension / 4));
 }
@@ -31,15 +29,16 @@ uint32_t sobolScrambleSeed(uint64_t pixelKey, uint32_t dimension) {
   return static_cast<uint32_t>(hashCombine(pixelKey ^ kValueScrambleSalt, dimension));
 }
 
-// Independent: one PCG32 per pair of dimensions, seeded from the sample and the pair.
-Pcg32 pairGenerator(uint64_t pixelKey, uint32_t index, uint32_t dimension) {
-  return Pcg32(hashCombine(hashCombine(pixelKey, index), dimension / 2));
+// Independent: 64 random bits per pair of dimensions, a hash of (pixel, index, pair); the even
+// dimension takes the low half, the odd one the high half. Any dimension costs two mixing steps:
+// no generator to seed and no stepping past the dimensions before it.
+uint64_t independentPairBits(uint64_t pixelKey, uint32_t index, uint32_t dimension) {
+  return hashCombine(hashCombine(pixelKey, index), dimension / 2);
 }
 
 uint32_t independentBits(uint64_t pixelKey, uint32_t index, uint32_t dimension) {
-  Pcg32 rng = pairGenerator(pixelKey, index, dimension);
-  if (dimension % 2 == 1) rng.nextUInt();
-  return rng.nextUInt();
+  const uint64_t bits = independentPairBits(pixelKey, index, dimension);
+  return static_cast<uint32_t>(dimension % 2 == 0 ? bits : bits >> 32);
 }
 
 // Kensler 2013, "Correlated Multi-Jittered Sampling": element i of a pseudo-random permutation
@@ -129,21 +128,20 @@ float Sampler::get(uint32_t px, uint32_t py, uint32_t index, uint32_t dimension)
 
 Vec2 Sampler::get2D(uint64_t pixelKey, uint32_t index, uint32_t dimension) const {
   // The same values as get(dimension) and get(dimension + 1), with the shared work done once:
-  // for the independent sampler both come from one seeded generator.
+  // for the independent sampler both halves of one hash.
   if (type_ == SamplerType::Independent) {
-    Pcg32 rng = pairGenerator(pixelKey, index, dimension);
-    const float u = toUnitFloat(rng.nextUInt());
-    return Vec2(u, toUnitFloat(rng.nextUInt()));
+    const uint64_t bits = independentPairBits(pixelKey, index, dimension);
+    return Vec2(toUnitFloat(static_cast<uint32_t>(bits)),
+                toUnitFloat(static_cast<uint32_t>(bits >> 32)));
   }
   if (type_ == SamplerType::Sobol) {
-    // Both dimensions lie in one block of four: one index shuffle, one pass over its bits.
-    const uint32_t shuffledIndex =
-        nestedUniformScramble(index, sobolShuffleSeed(pixelKey, dimension));
-    uint32_t first, second;
-    sobolSamplePair(shuffledIndex, dimension % 4, first, second);
-    return Vec2(
-        toUnitFloat(nestedUniformScramble(first, sobolScrambleSeed(pixelKey, dimension))),
-        toUnitFloat(nestedUniformScramble(second, sobolScrambleSeed(pixelKey, dimension + 1))));
+    // Both dimensions lie in one block of four, so they share the index shuffle.
+    const uint32_t reversedIndex = reverseBits(index);
+    const uint32_t shuffleSeed = sobolShuffleSeed(pixelKey, dimension);
+    return Vec2(toUnitFloat(owenScrambledSobol(reversedIndex, dimension % 4, shuffleSeed,
+                                               sobolScrambleSeed(pixelKey, dimension))),
+                toUnitFloat(owenScrambledSobol(reversedIndex, (dimension + 1) % 4, shuffleSeed,
+                                               sobolScrambleSeed(pixelKey, dimension + 1))));
   }
   return Vec2(get(pixelKey, index, dimension), get(pixelKey, index, dimension + 1));
 }
@@ -173,10 +171,10 @@ float Sampler::get(uint64_t pixelKey, uint32_t index, uint32_t dimension) const 
       // on its own, which decorrelates blocks. Each pixel has its own scrambles.
       // Owen-scrambling the index maps every aligned block of 2^m indices onto another one, so
       // the first 2^m samples of a pixel are still a whole block of the sequence: a net.
-      const uint32_t shuffledIndex =
-          nestedUniformScramble(index, sobolShuffleSeed(pixelKey, dimension));
-      const uint32_t x = sobolSample(shuffledIndex, dimension % 4);
-      return toUnitFloat(nestedUniformScramble(x, sobolScrambleSeed(pixelKey, dimension)));
+      // (owenScrambledSobol computes exactly that, with the bit reversals folded into tables.)
+      return toUnitFloat(owenScrambledSobol(reverseBits(index), dimension % 4,
+                                            sobolShuffleSeed(pixelKey, dimension),
+                                            sobolScrambleSeed(pixelKey, dimension)));
     }
   }
   return 0.0f;  // unreachable: every SamplerType is handled above

@@ -14,7 +14,7 @@
 namespace pathway {
 
 enum class SamplerType {
-  Independent,  // PCG32 random numbers, seeded by a hash of (pixel, index, dimension pair, seed)
+  Independent,  // hashed bits: one 64-bit hash of (pixel, index, dimension pair, seed) per pair
   Stratified,   // jittered strata per pair of dimensions, strata shuffled per pixel and pair
   Sobol,        // Owen-scrambled Sobol' (Joe-Kuo direction numbers), hash-based nested scrambling
 };
@@ -52,7 +52,10 @@ class Sampler {
 class SampleStream {
  public:
   SampleStream(const Sampler& sampler, uint32_t pixelX, uint32_t pixelY, uint32_t index)
-      : sampler_(&sampler), pixelKey_(sampler.pixelKey(pixelX, pixelY)), index_(index) {}
+      : SampleStream(sampler, sampler.pixelKey(pixelX, pixelY), index) {}
+  // With the pixel's key (Sampler::pixelKey) computed once for all of its samples.
+  SampleStream(const Sampler& sampler, uint64_t pixelKey, uint32_t index)
+      : sampler_(&sampler), pixelKey_(pixelKey), index_(index) {}
 
   float next1D() { return sampler_->get(pixelKey_, index_, dimension_++); }
   Vec2 next2D() {

@@ -88,6 +88,28 @@ constexpr ByteTables buildByteTables() {
 }
 constexpr ByteTables kByteTables = buildByteTables();
 
+// The same products for the Owen-scrambled path (owenScrambledSobol), with both ends bit-reversed:
+// the input byte is a byte of the reversed index, the output the reversed coordinate.
+constexpr uint32_t reverseBitsConstexpr(uint32_t x) {
+  uint32_t r = 0;
+  for (uint32_t bit = 0; bit < 32; ++bit)
+    if (x & (1u << bit)) r |= 1u << (31 - bit);
+  return r;
+}
+constexpr ByteTables buildReversedByteTables() {
+  ByteTables tables{};
+  for (uint32_t d = 0; d < 4; ++d)
+    for (uint32_t byte = 0; byte < 4; ++byte)
+      for (uint32_t value = 0; value < 256; ++value) {
+        uint32_t x = 0;
+        for (uint32_t bit = 0; bit < 8; ++bit)  // bit j of the reversed index is bit 31 - j
+          if (value & (1u << bit)) x ^= kMatrices[d][31 - (8 * byte + bit)];
+        tables[d][byte][value] = reverseBitsConstexpr(x);
+      }
+  return tables;
+}
+constexpr ByteTables kReversedByteTables = buildReversedByteTables();
+
 uint32_t tableSample(uint32_t index, uint32_t dimension) {
   const auto& t = kByteTables[dimension];
   return t[0][index & 0xffu] ^ t[1][(index >> 8) & 0xffu] ^ t[2][(index >> 16) & 0xffu] ^
@@ -110,8 +132,7 @@ uint32_t laineKarrasPermutation(uint32_t x, uint32_t seed) {
 }  // namespace
 
 uint32_t reverseBits(uint32_t x) {
-  x = (x << 16) | (x >> 16);
-  x = ((x & 0x00ff00ffu) << 8) | ((x & 0xff00ff00u) >> 8);
+  x = __builtin_bswap32(x);  // the bytes in one instruction, then the bits within each byte
   x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
   x = ((x & 0x33333333u) << 2) | ((x & 0xccccccccu) >> 2);
   x = ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
@@ -129,25 +150,19 @@ uint32_t sobolSample(uint32_t index, uint32_t dimension) {
   return x;
 }
 
-void sobolSamplePair(uint32_t index, uint32_t dimension, uint32_t& first, uint32_t& second) {
-  assert(dimension + 1 < kSobolDimensions);
-  if (dimension + 1 < 4) {
-    first = tableSample(index, dimension);
-    second = tableSample(index, dimension + 1);
-    return;
-  }
-  const Matrix& a = kMatrices[dimension];
-  const Matrix& b = kMatrices[dimension + 1];
-  first = second = 0;
-  for (uint32_t k = 0; index != 0; index >>= 1, ++k) {
-    const uint32_t mask = 0u - (index & 1);  // all ones when bit k is set
-    first ^= a[k] & mask;
-    second ^= b[k] & mask;
-  }
-}
-
 uint32_t nestedUniformScramble(uint32_t x, uint32_t seed) {
   return reverseBits(laineKarrasPermutation(reverseBits(x), seed));
+}
+
+uint32_t owenScrambledSobol(uint32_t reversedIndex, uint32_t dimension, uint32_t shuffleSeed,
+                            uint32_t valueSeed) {
+  assert(dimension < 4);
+  // reverseBits(shuffled index), without reversing twice.
+  const uint32_t shuffled = laineKarrasPermutation(reversedIndex, shuffleSeed);
+  const auto& t = kReversedByteTables[dimension];
+  const uint32_t reversedValue = t[0][shuffled & 0xffu] ^ t[1][(shuffled >> 8) & 0xffu] ^
+                                 t[2][(shuffled >> 16) & 0xffu] ^ t[3][shuffled >> 24];
+  return reverseBits(laineKarrasPermutation(reversedValue, valueSeed));
 }
 
 }  // namespace pathway

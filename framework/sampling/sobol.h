@@ -16,8 +16,6 @@ constexpr uint32_t kSobolDimensions = 64;
 // natural order (not Gray-code order), so point i is a pure function of i. Every aligned block of
 // 2^m consecutive points is a net; dimension 0 is the bit reversal of `index`.
 uint32_t sobolSample(uint32_t index, uint32_t dimension);
-// Dimensions `dimension` and `dimension + 1` of one point, in one pass over the index bits.
-void sobolSamplePair(uint32_t index, uint32_t dimension, uint32_t& first, uint32_t& second);
 
 // Nested uniform (Owen) scrambling in base 2 of a 32-bit fraction: each bit is flipped by a
 // pseudo-random function of the bits above it, as Owen's random tree of permutations does.
@@ -26,5 +24,14 @@ void sobolSamplePair(uint32_t index, uint32_t dimension, uint32_t& first, uint32
 uint32_t nestedUniformScramble(uint32_t x, uint32_t seed);
 
 uint32_t reverseBits(uint32_t x);
+
+// The sampler's fast path: the same values as
+//   nestedUniformScramble(sobolSample(nestedUniformScramble(index, shuffleSeed), dimension),
+//                         valueSeed)
+// for dimension < 4, given reverseBits(index). Scrambling works on reversed bits, so the tables
+// behind it take the reversed shuffled index and give the reversed coordinate: of the six bit
+// reversals the formula spells out, one is left per value (and one per sample, by the caller).
+uint32_t owenScrambledSobol(uint32_t reversedIndex, uint32_t dimension, uint32_t shuffleSeed,
+                            uint32_t valueSeed);
 
 }  // namespace pathway

@@ -33,16 +33,16 @@ void Camera::setup(const Vec3& position, const Vec3& forward, const Vec3& up, fl
   right_ = glm::normalize(glm::cross(forward, up));
   up_ = glm::cross(right_, forward_);
   yfov_ = yfov;
-  width_ = width;
-  height_ = height;
-  halfHeight_ = std::tan(0.5f * yfov);
-  halfWidth_ = halfHeight_ * static_cast<float>(width) / static_cast<float>(height);
+  const float halfHeight = std::tan(0.5f * yfov);
+  const float halfWidth = halfHeight * static_cast<float>(width) / static_cast<float>(height);
+  topLeft_ = forward_ - halfWidth * right_ + halfHeight * up_;
+  pixelRight_ = (2.0f * halfWidth / static_cast<float>(width)) * right_;
+  pixelDown_ = (-2.0f * halfHeight / static_cast<float>(height)) * up_;
 }
 
 Ray Camera::generateRay(Vec2 filmPosition) const {
-  const float x = (2.0f * filmPosition.x / width_ - 1.0f) * halfWidth_;
-  const float y = (1.0f - 2.0f * filmPosition.y / height_) * halfHeight_;
-  return Ray{position_, glm::normalize(forward_ + x * right_ + y * up_), kInfinity};
+  const Vec3 direction = topLeft_ + filmPosition.x * pixelRight_ + filmPosition.y * pixelDown_;
+  return Ray{position_, glm::normalize(direction), kInfinity};
 }
 
 }  // namespace pathway

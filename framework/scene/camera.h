@@ -28,8 +28,9 @@ class Camera {
 
   Vec3 position_, forward_, right_, up_;
   float yfov_ = 0.0f;
-  float halfHeight_ = 0.0f, halfWidth_ = 0.0f;  // of the image plane at distance 1
-  int width_ = 1, height_ = 1;
+  // The image plane at distance 1: its top-left corner and the steps of one pixel across and
+  // down, so that a ray costs two multiply-adds and a normalisation.
+  Vec3 topLeft_, pixelRight_, pixelDown_;
 };
 
 }  // namespace pathway

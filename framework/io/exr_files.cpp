@@ -1,0 +1,88 @@
+#include "io/exr_files.h"
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
+
+#include <algorithm>
+#include <exception>
+
+#include "core/error.h"
+
+namespace pathway {
+namespace {
+
+// A frame buffer over channel-interleaved floats: channel c of pixel (x, y) is at
+// pixels[(y * width + x) * count + c].
+Imf::FrameBuffer interleavedFrameBuffer(const std::vector<std::string>& channels, int width,
+                                        const float* pixels) {
+  Imf::FrameBuffer frame;
+  const size_t count = channels.size();
+  for (size_t c = 0; c < count; ++c)
+    frame.insert(channels[c], Imf::Slice(Imf::FLOAT, (char*)(pixels + c), sizeof(float) * count,
+                                         sizeof(float) * count * width));
+  return frame;
+}
+
+}  // namespace
+
+void writeExrRaster(const std::string& path, const RasterHeader& header, const float* pixels) {
+  try {
+    Imf::Header exr(header.width, header.height);
+    exr.compression() = Imf::ZIP_COMPRESSION;
+    for (const std::string& name : header.channels)
+      exr.channels().insert(name, Imf::Channel(Imf::FLOAT));
+    for (const auto& [key, value] : header.attributes) exr.insert(key, Imf::StringAttribute(value));
+    Imf::OutputFile file(path.c_str(), exr);
+    file.setFrameBuffer(interleavedFrameBuffer(header.channels, header.width, pixels));
+    file.writePixels(header.height);
+  } catch (const std::exception& error) {
+    throw PathwayError(path + ": writing failed: " + error.what());
+  }
+}
+
+Raster readExrRaster(const std::string& path) {
+  try {
+    Imf::InputFile file(path.c_str());
+    const Imf::Header& exr = file.header();
+    const Imath::Box2i window = exr.dataWindow();
+    Raster raster;
+    RasterHeader& header = raster.header;
+    header.width = window.max.x - window.min.x + 1;
+    header.height = window.max.y - window.min.y + 1;
+    if (header.width <= 0 || header.height <= 0)
+      throw PathwayError(path + ": cannot read image: empty data window");
+    std::vector<std::string> others;
+    for (auto channel = exr.channels().begin(); channel != exr.channels().end(); ++channel)
+      others.push_back(channel.name());
+    for (const char* name : {"R", "G", "B"}) {
+      const auto found = std::find(others.begin(), others.end(), name);
+      if (found == others.end()) continue;
+      header.channels.push_back(name);
+      others.erase(found);
+    }
+    header.channels.insert(header.channels.end(), others.begin(), others.end());
+    for (auto attribute = exr.begin(); attribute != exr.end(); ++attribute)
+      if (const auto* text = dynamic_cast<const Imf::StringAttribute*>(&attribute.attribute()))
+        header.attributes.emplace_back(attribute.name(), text->value());
+
+    raster.pixels.resize(size_t(header.width) * header.height * header.channels.size());
+    // The frame buffer is addressed in data-window coordinates: shift its base to the window's
+    // first pixel.
+    const size_t count = header.channels.size();
+    const ptrdiff_t origin = (ptrdiff_t(window.min.y) * header.width + window.min.x) * count;
+    file.setFrameBuffer(
+        interleavedFrameBuffer(header.channels, header.width, raster.pixels.data() - origin));
+    file.readPixels(window.min.y, window.max.y);
+    return raster;
+  } catch (const PathwayError&) {
+    throw;
+  } catch (const std::exception& error) {
+    throw PathwayError(path + ": cannot read image: " + error.what());
+  }
+}
+
+}  // namespace pathway
