@@ -7,6 +7,8 @@
 //   pathway_bench startup [--repeats R]                    start-up and time to the first ray
 //   pathway_bench growth [scene] [--out DIR] [--max-triangles N] [--width W] [--repeats R]
 //                                       how cost grows: the tables of bench/growth.h, as CSV too
+//   pathway_bench ceiling [scene] [--width W] [--spp N] [--repeats R]
+//                                       stage5@ref vs a minimal path tracer on raw Embree
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
 
@@ -18,6 +20,7 @@
 #include <vector>
 
 #include "bench_kit.h"
+#include "ceiling.h"
 #include "core/error.h"
 #include "growth.h"
 #include "render/render_session.h"
@@ -182,6 +185,7 @@ constexpr const char* kUsage =
     "       pathway_bench startup [--repeats R]\n"
     "       pathway_bench growth [scene] [--out DIR] [--max-triangles N] [--width W] "
     "[--repeats R]\n"
+    "       pathway_bench ceiling [scene] [--width W] [--spp N] [--repeats R]\n"
     "  rays:   raw Embree vs the framework, rays/s (default scene: the Cornell box; width 512,\n"
     "          best of 5 repeats; growth: best of 10)\n"
     "  stages: every stage vs raw Embree on the same rays\n"
@@ -191,7 +195,10 @@ constexpr const char* kUsage =
     "  growth: how cost grows, in one run: stages vs raw Embree, 1 vs 2 threads, cost vs spp,\n"
     "          BVH build time and bytes per triangle for generated grids of 10k to N triangles\n"
     "          (N from 10k to 100M, default 10M); --out DIR also writes the tables as CSV\n"
-    "          (scripts/draw_growth.py DIR draws them)\n";
+    "          (scripts/draw_growth.py DIR draws them)\n"
+    "  ceiling: stage5@ref vs a minimal path tracer on raw Embree, the same image rendered in\n"
+    "           turns (width 256, 64 spp, best of 3); exit status 1 when their global means\n"
+    "           differ by more than 1 % (or 4 standard errors, when noise is larger)\n";
 
 // A mistake on the command line: one message, the usage is not repeated.
 struct UsageError : PathwayError {
@@ -228,6 +235,7 @@ struct Arguments {
   std::string mode;
   std::optional<std::string> scene;
   std::optional<int> width, repeats;
+  std::optional<uint32_t> spp;
   std::optional<std::string> outDir;
   std::optional<uint64_t> maxTriangles;
 };
@@ -236,8 +244,9 @@ Arguments parseArguments(int argc, char** argv) {
   Arguments args;
   args.mode = argv[1];
   if (args.mode != "rays" && args.mode != "stages" && args.mode != "memory" &&
-      args.mode != "growth" && args.mode != "startup")
-    throw UsageError("unknown mode '" + args.mode + "' (rays, stages, memory, growth or startup)");
+      args.mode != "growth" && args.mode != "startup" && args.mode != "ceiling")
+    throw UsageError("unknown mode '" + args.mode +
+                     "' (rays, stages, memory, growth, startup or ceiling)");
   for (int i = 2; i < argc; ++i) {
     const std::string arg = argv[i];
     auto value = [&]() -> std::string {
@@ -252,6 +261,10 @@ Arguments parseArguments(int argc, char** argv) {
           parseCount(arg, value(), 1, static_cast<uint64_t>(setting::kWidth.maxValue)));
     } else if (arg == "--repeats") {
       args.repeats = static_cast<int>(parseCount(arg, value(), 1, 1000));
+    } else if (arg == "--spp") {
+      onlyFor("ceiling");
+      args.spp = static_cast<uint32_t>(parseCount(arg, value(), setting::kSamplesPerPixel.minValue,
+                                                  setting::kSamplesPerPixel.maxValue));
     } else if (arg == "--out") {
       onlyFor("growth");
       args.outDir = value();
@@ -282,6 +295,14 @@ int run(const Arguments& args) {
   if (args.mode == "startup") {
     if (args.scene || args.width) throw UsageError("startup takes --repeats only");
     return benchStartup(args.repeats.value_or(7));
+  }
+  if (args.mode == "ceiling") {
+    CeilingOptions ceiling;
+    ceiling.scene = scene;
+    ceiling.width = args.width.value_or(ceiling.width);
+    ceiling.samplesPerPixel = args.spp.value_or(ceiling.samplesPerPixel);
+    ceiling.repeats = args.repeats.value_or(ceiling.repeats);
+    return benchCeiling(ceiling);
   }
   GrowthOptions growth;
   growth.scene = scene;

@@ -54,6 +54,9 @@ class RawEmbree {
     rtcOccluded1(scene_, &context, &r);
     return r.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
   }
+  // For code that needs the whole hit record (geometry, primitive, u, v, Ng), such as the raw
+  // path tracer: it calls rtcIntersect1/rtcOccluded1 on this BVH itself.
+  RTCScene handle() const { return scene_; }
 
  private:
   static RTCRay toEmbree(const Ray& ray) {

@@ -1,0 +1,173 @@
+#include "raw_path_tracer.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+
+#include "sampling/hash.h"
+
+namespace pathway::bench {
+namespace {
+
+// Rows per parallel task. A row of 256 pixels at 64 spp is already thousands of paths, so a few
+// rows make the task overhead invisible and still leave dozens of tasks to balance the cores.
+constexpr int kRowsPerTile = 4;
+
+RTCRay embreeRay(const Vec3& origin, const Vec3& direction, float tMax) {
+  RTCRay r;
+  r.org_x = origin.x, r.org_y = origin.y, r.org_z = origin.z;
+  r.dir_x = direction.x, r.dir_y = direction.y, r.dir_z = direction.z;
+  r.tnear = 0.0f, r.tfar = tMax, r.time = 0.0f;
+  r.mask = 0xFFFFFFFFu, r.id = 0, r.flags = 0;
+  return r;
+}
+
+}  // namespace
+
+RawPathTracer::RawPathTracer(const Scene& scene, const RawEmbree& embree)
+    : scene_(scene), embree_(embree.handle()), lights_(scene, "area") {
+  for (const Mesh& mesh : scene.meshes) {
+    const Material& material = scene.materials[mesh.material];
+    meshes_.push_back({material.baseColor, material.isEmissive() ? material.emission : Color(0.0f),
+                       material.doubleSided});
+  }
+}
+
+RawPathImage RawPathTracer::render(const Camera& camera, const RawPathSettings& settings) const {
+  RawPathImage image;
+  image.width = settings.width;
+  image.height = settings.height;
+  image.pixels.assign(static_cast<size_t>(settings.width) * settings.height, Color(0.0f));
+  tbb::combinable<RayCounters> threadRays;
+  auto renderRows = [&](const tbb::blocked_range<int>& rows) {
+    RayCounters rays;  // this tile's, added to the thread's total once at its end
+    for (int y = rows.begin(); y < rows.end(); ++y) {
+      for (int x = 0; x < settings.width; ++x) {
+        const size_t pixel = static_cast<size_t>(y) * settings.width + x;
+        // One generator per pixel, seeded from (pixel, seed): the image does not depend on
+        // which thread rendered which rows.
+        Pcg32 rng(hashValues(pixel, settings.seed));
+        Color sum(0.0f);
+        for (uint32_t i = 0; i < settings.samplesPerPixel; ++i) {
+          // Box filter one pixel wide: a uniform point in the pixel, weight 1, own pixel only.
+          const float jitterX = rng.nextFloat();
+          const float jitterY = rng.nextFloat();
+          const Ray ray = camera.generateRay(Vec2(x + jitterX, y + jitterY));
+          sum += radiance(ray, settings, rng, rays);
+        }
+        image.pixels[pixel] = sum / static_cast<float>(settings.samplesPerPixel);
+      }
+    }
+    rays.samples = static_cast<uint64_t>(rows.size()) * settings.width * settings.samplesPerPixel;
+    threadRays.local() += rays;
+  };
+  tbb::parallel_for(tbb::blocked_range<int>(0, settings.height, kRowsPerTile), renderRows);
+  threadRays.combine_each([&](const RayCounters& rays) { image.rays += rays; });
+  return image;
+}
+
+// Stage 5's estimator, step for step (solutions/stage5/stage5_path_tracing.cpp), with the
+// algebra an expert would fold: BRDF · cos / pdf of a cosine-weighted direction is the albedo.
+Color RawPathTracer::radiance(const Ray& cameraRay, const RawPathSettings& settings, Pcg32& rng,
+                              RayCounters& rays) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  Color result(0.0f);
+  Color throughput(1.0f);
+  Vec3 origin = cameraRay.origin;
+  Vec3 direction = cameraRay.direction;
+
+  for (int bounce = 0;; ++bounce) {
+    RTCRayHit rayHit;
+    rayHit.ray = embreeRay(origin, direction, kInfinity);
+    rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(embree_, &context, &rayHit);
+    ++(bounce == 0 ? rays.primary : rays.secondary);
+    if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
+      result += throughput * scene_.background;  // NEE never samples the background
+      break;
+    }
+
+    const MeshShading& shading = meshes_[rayHit.hit.geomID];
+    // Embree's Ng is the unnormalised front-face normal (v1 - v0) x (v2 - v0), as the scene's
+    // counter-clockwise winding defines the front: no need to fetch the vertices for it.
+    const Vec3 ng(rayHit.hit.Ng_x, rayHit.hit.Ng_y, rayHit.hit.Ng_z);
+    const bool frontFace = glm::dot(ng, direction) < 0.0f;
+    // With NEE, emitters found by bounces are already counted by the shadow rays: camera only.
+    if (bounce == 0 && (frontFace || shading.doubleSided)) result += shading.emission;
+    if (settings.maxDepth >= 0 && bounce >= settings.maxDepth) break;
+
+    const Vec3 normal = glm::normalize(frontFace ? ng : -ng);  // facing the incoming ray
+    // The point from barycentrics lies on the triangle to float precision, which the few-ULP
+    // origin offset relies on; origin + t · direction drifts with the distance travelled.
+    const Mesh& mesh = scene_.meshes[rayHit.hit.geomID];
+    const glm::uvec3 triangle = mesh.triangles[rayHit.hit.primID];
+    const float* xyz = &mesh.positions.data()->x;  // component loads: no 12-byte copies
+    auto vertex = [xyz](uint32_t i) { return Vec3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]); };
+    const float u = rayHit.hit.u, v = rayHit.hit.v;
+    const Vec3 position =
+        (1.0f - u - v) * vertex(triangle.x) + u * vertex(triangle.y) + v * vertex(triangle.z);
+    // Every ray leaving this point goes into the hemisphere of `normal`, so one offset serves all.
+    const Vec3 leaving = offsetRayOrigin(position, normal);
+
+    result +=
+        throughput * directLight(position, leaving, normal, shading.albedo, rng, context, rays);
+
+    // One cosine-weighted continuation: BRDF · cos / pdf = (albedo / π) · cos / (cos / π).
+    const float u1 = rng.nextFloat();
+    const float u2 = rng.nextFloat();
+    const float r = std::sqrt(u1), phi = 2.0f * kPi * u2;
+    const Vec3 local(r * std::cos(phi), r * std::sin(phi), std::sqrt(1.0f - u1));
+    throughput *= shading.albedo;
+
+    if (bounce + 1 >= settings.rouletteDepth) {
+      // As stage 5: survive with q = min(0.95, max throughput), divide by q.
+      const float q = std::fmin(0.95f, maxComponent(throughput));
+      if (rng.nextFloat() >= q) break;
+      throughput /= q;
+    }
+    origin = leaving;
+    direction = Frame(normal).toWorld(local);
+  }
+  return result;
+}
+
+// Next-event estimation: one shadow ray to a uniform point on an emitter picked by area.
+Color RawPathTracer::directLight(const Vec3& position, const Vec3& leaving, const Vec3& normal,
+                                 const Color& albedo, Pcg32& rng, RTCIntersectContext& context,
+                                 RayCounters& rays) const {
+  const float uPick = rng.nextFloat();
+  const float uPoint1 = rng.nextFloat();
+  const float uPoint2 = rng.nextFloat();
+  if (lights_.empty()) return Color(0.0f);
+  const EmitterPicker::Pick pick = lights_.pick(uPick);
+  const EmissiveTriangle& light = *pick.emitter;
+  const float s = std::sqrt(uPoint1);  // uniform on the triangle: density 1 / area
+  const float b0 = 1.0f - s, b1 = uPoint2 * s;
+  const Vec3 target = b0 * light.p0 + b1 * light.p1 + (1.0f - b0 - b1) * light.p2;
+
+  const Vec3 toLight = target - position;
+  const float distanceSquared = glm::dot(toLight, toLight);
+  if (!(distanceSquared > 0.0f)) return Color(0.0f);
+  const Vec3 wi = toLight / std::sqrt(distanceSquared);
+  const float cosSurface = glm::dot(normal, wi);
+  const float cosLight = -glm::dot(light.normal, wi);
+  // A one-sided emitter lights only the side its front face looks at.
+  if (cosSurface <= 0.0f || cosLight == 0.0f || (cosLight < 0.0f && !light.doubleSided))
+    return Color(0.0f);
+
+  // The far end moves off the emitter towards the surface: the segment (0, 1] stops just short
+  // of the emitter, so the emitter itself cannot block it.
+  const Vec3 end = offsetRayOrigin(target, cosLight > 0.0f ? light.normal : -light.normal);
+  RTCRay shadow = embreeRay(leaving, end - leaving, 1.0f);
+  rtcOccluded1(embree_, &context, &shadow);
+  ++rays.shadow;
+  if (shadow.tfar < 0.0f) return Color(0.0f);  // Embree sets tfar to -inf when blocked
+  // L_e · (albedo / π) · cos θ_x · |cos θ_y| / d² / p_A, with p_A = P(triangle) / area.
+  const float geometry = cosSurface * std::fabs(cosLight) / distanceSquared;
+  return light.emission * albedo * (kInvPi * geometry * light.area / pick.probability);
+}
+
+}  // namespace pathway::bench

@@ -1,0 +1,66 @@
+// A minimal path tracer straight on Embree 3: the ceiling `pathway_bench ceiling` holds stage5@ref
+// against. It computes the same estimator as stage 5 with its defaults (one NEE shadow ray per hit
+// to a point on an emitter picked by area, one cosine-weighted continuation, Russian roulette
+// after rr-depth, max-depth bounces, emission seen by camera rays only, box filter one pixel wide)
+// on the same scene and camera, with none of the framework's render machinery in between: no
+// RayTracer, RenderContext, Renderer, Film or Sampler. Whatever the framework spends beyond this
+// tracer is overhead that a faster framework could remove.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/ray_counters.h"
+#include "raw_embree.h"
+#include "render/emitter_picker.h"
+#include "sampling/pcg32.h"
+#include "scene/camera.h"
+
+namespace pathway::bench {
+
+struct RawPathSettings {
+  int width = 256;
+  int height = 256;
+  uint32_t samplesPerPixel = 64;
+  int maxDepth = 5;       // stage 5's max-depth: most bounces (-1: no limit)
+  int rouletteDepth = 3;  // stage 5's rr-depth: bounces before Russian roulette starts
+  uint64_t seed = 0;
+};
+
+struct RawPathImage {
+  int width = 0;
+  int height = 0;
+  std::vector<Color> pixels;  // mean radiance per pixel, rows top to bottom
+  RayCounters rays;           // primary, secondary and shadow rays traced, exactly
+};
+
+class RawPathTracer {
+ public:
+  // `embree` must hold `scene`'s meshes with geometry IDs equal to the mesh indices (RawEmbree
+  // does). Textures are not looked up: albedo is the material's base colour.
+  RawPathTracer(const Scene& scene, const RawEmbree& embree);
+
+  RawPathImage render(const Camera& camera, const RawPathSettings& settings) const;
+
+ private:
+  // What shading needs of a mesh, gathered once so that a hit costs one small lookup.
+  struct MeshShading {
+    Color albedo;
+    Color emission;  // zero unless the material emits
+    bool doubleSided;
+  };
+
+  Color radiance(const Ray& cameraRay, const RawPathSettings& settings, Pcg32& rng,
+                 RayCounters& rays) const;
+  // `leaving`: the hit point already moved off its surface to the side of `normal`.
+  Color directLight(const Vec3& position, const Vec3& leaving, const Vec3& normal,
+                    const Color& albedo, Pcg32& rng, RTCIntersectContext& context,
+                    RayCounters& rays) const;
+
+  const Scene& scene_;
+  RTCScene embree_;
+  std::vector<MeshShading> meshes_;
+  EmitterPicker lights_;
+};
+
+}  // namespace pathway::bench
