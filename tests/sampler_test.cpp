@@ -234,12 +234,14 @@ TEST(Sobol, OwenScrambledFastPathEqualsTheFormula) {
   Pcg32 rng(17);
   for (int trial = 0; trial < 20000; ++trial) {
     const uint32_t index = trial < 1000 ? uint32_t(trial) : rng.nextUInt();
-    const uint32_t shuffleSeed = rng.nextUInt(), valueSeed = rng.nextUInt();
+    const uint32_t shuffleSeed = rng.nextUInt();
+    const uint32_t valueSeeds[4] = {rng.nextUInt(), rng.nextUInt(), rng.nextUInt(), rng.nextUInt()};
+    uint32_t values[4];
+    owenScrambledSobolBlock(reverseBits(index), shuffleSeed, valueSeeds, values);
     for (uint32_t dim = 0; dim < 4; ++dim) {
       const uint32_t expected = nestedUniformScramble(
-          sobolSample(nestedUniformScramble(index, shuffleSeed), dim), valueSeed);
-      ASSERT_EQ(owenScrambledSobol(reverseBits(index), dim, shuffleSeed, valueSeed), expected)
-          << "index " << index << ", dimension " << dim;
+          sobolSample(nestedUniformScramble(index, shuffleSeed), dim), valueSeeds[dim]);
+      ASSERT_EQ(values[dim], expected) << "index " << index << ", dimension " << dim;
     }
   }
 }
@@ -367,6 +369,28 @@ TEST(SamplerAll, DimensionsAreUncorrelated) {
             cov / std::sqrt((sxx / n - (sx / n) * (sx / n)) * (syy / n - (sy / n) * (sy / n)));
         EXPECT_LT(std::abs(r), 0.02)
             << samplerTypeName(type) << ", dimensions " << d0 << ", " << d1;
+      }
+    }
+  }
+}
+
+// The stream draws four dimensions at a time; every value must be the one get() gives.
+TEST(SamplerStream, BlocksOfFourGiveTheSameValuesAsGet) {
+  for (SamplerType type : kAllTypes) {
+    const Sampler sampler(type, 16, 9);
+    for (uint32_t index : {0u, 1u, 7u, 15u, 16u, 1000u}) {
+      SampleStream stream(sampler, 5, 6, index);
+      for (uint32_t d = 0; d < 24;) {
+        if (d % 3 == 0) {  // a mix of 1D and 2D draws, so blocks are entered both ways
+          const Vec2 uv = stream.next2D();
+          if (d % 2 == 1) ++d;
+          EXPECT_EQ(uv.x, sampler.get(5, 6, index, d)) << samplerTypeName(type) << " d " << d;
+          EXPECT_EQ(uv.y, sampler.get(5, 6, index, d + 1)) << samplerTypeName(type) << " d " << d;
+          d += 2;
+        } else {
+          EXPECT_EQ(stream.next1D(), sampler.get(5, 6, index, d)) << samplerTypeName(type);
+          ++d;
+        }
       }
     }
   }

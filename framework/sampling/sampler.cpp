@@ -25,8 +25,17 @@ constexpr uint64_t kStrataShuffleSalt = 0x535452415441;  // "STRATA"
 uint32_t sobolShuffleSeed(uint64_t pixelKey, uint32_t dimension) {
   return static_cast<uint32_t>(hashCombine(pixelKey ^ kIndexShuffleSalt, dimension / 4));
 }
-uint32_t sobolScrambleSeed(uint64_t pixelKey, uint32_t dimension) {
-  return static_cast<uint32_t>(hashCombine(pixelKey ^ kValueScrambleSalt, dimension));
+// Dimensions firstDimension .. + 3 (one block of four) of sample `index`, as 32-bit fractions.
+void sobolBlock(uint64_t pixelKey, uint32_t index, uint32_t firstDimension, uint32_t values[4]) {
+  // One hash per pair of dimensions gives both of their value seeds (its low and high halves).
+  uint32_t seeds[4];
+  for (uint32_t d = 0; d < 4; d += 2) {
+    const uint64_t bits = hashCombine(pixelKey ^ kValueScrambleSalt, (firstDimension + d) / 2);
+    seeds[d] = static_cast<uint32_t>(bits);
+    seeds[d + 1] = static_cast<uint32_t>(bits >> 32);
+  }
+  owenScrambledSobolBlock(reverseBits(index), sobolShuffleSeed(pixelKey, firstDimension), seeds,
+                          values);
 }
 
 // Independent: 64 random bits per pair of dimensions, a hash of (pixel, index, pair); the even
@@ -135,15 +144,27 @@ Vec2 Sampler::get2D(uint64_t pixelKey, uint32_t index, uint32_t dimension) const
                 toUnitFloat(static_cast<uint32_t>(bits >> 32)));
   }
   if (type_ == SamplerType::Sobol) {
-    // Both dimensions lie in one block of four, so they share the index shuffle.
-    const uint32_t reversedIndex = reverseBits(index);
-    const uint32_t shuffleSeed = sobolShuffleSeed(pixelKey, dimension);
-    return Vec2(toUnitFloat(owenScrambledSobol(reversedIndex, dimension % 4, shuffleSeed,
-                                               sobolScrambleSeed(pixelKey, dimension))),
-                toUnitFloat(owenScrambledSobol(reversedIndex, (dimension + 1) % 4, shuffleSeed,
-                                               sobolScrambleSeed(pixelKey, dimension + 1))));
+    // Both dimensions lie in one block of four.
+    uint32_t values[4];
+    sobolBlock(pixelKey, index, dimension - dimension % 4, values);
+    return Vec2(toUnitFloat(values[dimension % 4]), toUnitFloat(values[dimension % 4 + 1]));
   }
   return Vec2(get(pixelKey, index, dimension), get(pixelKey, index, dimension + 1));
+}
+
+void Sampler::getBlock(uint64_t pixelKey, uint32_t index, uint32_t firstDimension,
+                       float values[4]) const {
+  if (type_ == SamplerType::Sobol) {
+    uint32_t bits[4];
+    sobolBlock(pixelKey, index, firstDimension, bits);
+    for (uint32_t d = 0; d < 4; ++d) values[d] = toUnitFloat(bits[d]);
+    return;
+  }
+  for (uint32_t d = 0; d < 4; d += 2) {
+    const Vec2 pair = get2D(pixelKey, index, firstDimension + d);
+    values[d] = pair.x;
+    values[d + 1] = pair.y;
+  }
 }
 
 float Sampler::get(uint64_t pixelKey, uint32_t index, uint32_t dimension) const {
@@ -171,10 +192,11 @@ float Sampler::get(uint64_t pixelKey, uint32_t index, uint32_t dimension) const 
       // on its own, which decorrelates blocks. Each pixel has its own scrambles.
       // Owen-scrambling the index maps every aligned block of 2^m indices onto another one, so
       // the first 2^m samples of a pixel are still a whole block of the sequence: a net.
-      // (owenScrambledSobol computes exactly that, with the bit reversals folded into tables.)
-      return toUnitFloat(owenScrambledSobol(reverseBits(index), dimension % 4,
-                                            sobolShuffleSeed(pixelKey, dimension),
-                                            sobolScrambleSeed(pixelKey, dimension)));
+      // (owenScrambledSobolBlock computes exactly that, with the bit reversals folded into
+      // tables.)
+      uint32_t values[4];
+      sobolBlock(pixelKey, index, dimension - dimension % 4, values);
+      return toUnitFloat(values[dimension % 4]);
     }
   }
   return 0.0f;  // unreachable: every SamplerType is handled above

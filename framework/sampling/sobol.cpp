@@ -154,15 +154,16 @@ uint32_t nestedUniformScramble(uint32_t x, uint32_t seed) {
   return reverseBits(laineKarrasPermutation(reverseBits(x), seed));
 }
 
-uint32_t owenScrambledSobol(uint32_t reversedIndex, uint32_t dimension, uint32_t shuffleSeed,
-                            uint32_t valueSeed) {
-  assert(dimension < 4);
+void owenScrambledSobolBlock(uint32_t reversedIndex, uint32_t shuffleSeed,
+                             const uint32_t valueSeeds[4], uint32_t values[4]) {
   // reverseBits(shuffled index), without reversing twice.
   const uint32_t shuffled = laineKarrasPermutation(reversedIndex, shuffleSeed);
-  const auto& t = kReversedByteTables[dimension];
-  const uint32_t reversedValue = t[0][shuffled & 0xffu] ^ t[1][(shuffled >> 8) & 0xffu] ^
-                                 t[2][(shuffled >> 16) & 0xffu] ^ t[3][shuffled >> 24];
-  return reverseBits(laineKarrasPermutation(reversedValue, valueSeed));
+  for (uint32_t d = 0; d < 4; ++d) {
+    const auto& t = kReversedByteTables[d];
+    const uint32_t reversedValue = t[0][shuffled & 0xffu] ^ t[1][(shuffled >> 8) & 0xffu] ^
+                                   t[2][(shuffled >> 16) & 0xffu] ^ t[3][shuffled >> 24];
+    values[d] = reverseBits(laineKarrasPermutation(reversedValue, valueSeeds[d]));
+  }
 }
 
 }  // namespace pathway

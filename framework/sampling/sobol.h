@@ -26,12 +26,12 @@ uint32_t nestedUniformScramble(uint32_t x, uint32_t seed);
 uint32_t reverseBits(uint32_t x);
 
 // The sampler's fast path: the same values as
-//   nestedUniformScramble(sobolSample(nestedUniformScramble(index, shuffleSeed), dimension),
-//                         valueSeed)
-// for dimension < 4, given reverseBits(index). Scrambling works on reversed bits, so the tables
-// behind it take the reversed shuffled index and give the reversed coordinate: of the six bit
-// reversals the formula spells out, one is left per value (and one per sample, by the caller).
-uint32_t owenScrambledSobol(uint32_t reversedIndex, uint32_t dimension, uint32_t shuffleSeed,
-                            uint32_t valueSeed);
+//   nestedUniformScramble(sobolSample(nestedUniformScramble(index, shuffleSeed), d), valueSeeds[d])
+// for the four dimensions d = 0..3 of one block, given reverseBits(index). Scrambling works on
+// reversed bits, so the tables behind it take the reversed shuffled index and give the reversed
+// coordinate: of the 3 + 2·4 bit reversals the formula spells out, one per value is left (and
+// one per sample, by the caller), and the shuffle is done once for the four.
+void owenScrambledSobolBlock(uint32_t reversedIndex, uint32_t shuffleSeed,
+                             const uint32_t valueSeeds[4], uint32_t values[4]);
 
 }  // namespace pathway

@@ -121,11 +121,12 @@ std::optional<SurfaceHit> RayTracer::intersect(const Ray& ray, RayKind kind,
   // whose error grows with the distance travelled.
   hit.position = w * p0 + u * p1 + v * p2;
 
-  const Vec3 frontNormal = glm::cross(p1 - p0, p2 - p0);
+  // Embree's Ng is the unnormalised front-face normal (p1 - p0) x (p2 - p0), already computed.
+  const Vec3 frontNormal(rayHit.hit.Ng_x, rayHit.hit.Ng_y, rayHit.hit.Ng_z);
   const float length = glm::length(frontNormal);
   hit.frontFace = glm::dot(frontNormal, ray.direction) < 0.0f;
   if (length > 0.0f && std::isfinite(length)) {
-    hit.normal = (hit.frontFace ? frontNormal : -frontNormal) / length;
+    hit.normal = (hit.frontFace ? frontNormal : -frontNormal) * (1.0f / length);
   } else {  // a sliver too thin for a normal: face the ray
     hit.normal = -glm::normalize(ray.direction);
   }
