@@ -13,6 +13,18 @@ bool isResolved(const PixelSums& p) {
   return p.absWeight > 0.0 && std::fabs(p.weight) > kUnresolvedWeightFraction * p.absWeight;
 }
 
+Color developedValue(const PixelSums& p) {
+  return Color(p.weightedRadiance / p.weight);
+}
+
+// Σ w²(L - I)² / (Σ w)², expanded so it can be accumulated sample by sample.
+Color developedVariance(const PixelSums& p) {
+  const glm::dvec3 mean = p.weightedRadiance / p.weight;
+  const glm::dvec3 spread = p.squaredWeightRadiance2 - 2.0 * mean * p.squaredWeightRadiance +
+                            mean * mean * p.squaredWeight;
+  return Color(glm::max(spread, glm::dvec3(0.0)) / (p.weight * p.weight));
+}
+
 }  // namespace
 
 FilmBlock::FilmBlock(int imageWidth, int imageHeight, int x0, int y0, int width, int height) {
@@ -35,10 +47,13 @@ void FilmBlock::clear() {
 Film::Film(int width, int height)
     : width_(width), height_(height), sums_(static_cast<size_t>(width) * height) {}
 
-void Film::merge(const FilmBlock& block) {
+void Film::merge(FilmBlock& block) {
   for (int y = block.y0(); y < block.y0() + block.height(); ++y)
-    for (int x = block.x0(); x < block.x0() + block.width(); ++x)
-      sums_[static_cast<size_t>(y) * width_ + x] += block.at(x, y);
+    for (int x = block.x0(); x < block.x0() + block.width(); ++x) {
+      PixelSums& sums = block.at(x, y);
+      sums_[static_cast<size_t>(y) * width_ + x] += sums;
+      sums = PixelSums{};
+    }
 }
 
 void Film::clear() {
@@ -51,7 +66,7 @@ Image Film::develop(size_t* unresolvedPixels) const {
   for (size_t i = 0; i < sums_.size(); ++i) {
     const PixelSums& p = sums_[i];
     if (isResolved(p)) {
-      image.pixels[i] = Color(p.weightedRadiance / p.weight);
+      image.pixels[i] = developedValue(p);
     } else if (p.absWeight > 0.0) {
       ++unresolved;
     }
@@ -62,15 +77,8 @@ Image Film::develop(size_t* unresolvedPixels) const {
 
 Image Film::variance() const {
   Image image(width_, height_);
-  for (size_t i = 0; i < sums_.size(); ++i) {
-    const PixelSums& p = sums_[i];
-    if (!isResolved(p)) continue;
-    const glm::dvec3 mean = p.weightedRadiance / p.weight;
-    // Σ w²(L - I)² / (Σ w)², expanded so it can be accumulated sample by sample.
-    const glm::dvec3 spread = p.squaredWeightRadiance2 - 2.0 * mean * p.squaredWeightRadiance +
-                              mean * mean * p.squaredWeight;
-    image.pixels[i] = Color(glm::max(spread, glm::dvec3(0.0)) / (p.weight * p.weight));
-  }
+  for (size_t i = 0; i < sums_.size(); ++i)
+    if (isResolved(sums_[i])) image.pixels[i] = developedVariance(sums_[i]);
   return image;
 }
 
@@ -79,6 +87,23 @@ Image Film::weights() const {
   for (size_t i = 0; i < sums_.size(); ++i)
     image.pixels[i] = Color(static_cast<float>(sums_[i].weight));
   return image;
+}
+
+void Film::developAll(Image& color, Image& variance, Image& weights,
+                      size_t* unresolvedPixels) const {
+  color = variance = weights = Image(width_, height_);
+  size_t unresolved = 0;
+  for (size_t i = 0; i < sums_.size(); ++i) {
+    const PixelSums& p = sums_[i];
+    weights.pixels[i] = Color(static_cast<float>(p.weight));
+    if (isResolved(p)) {
+      color.pixels[i] = developedValue(p);
+      variance.pixels[i] = developedVariance(p);
+    } else if (p.absWeight > 0.0) {
+      ++unresolved;
+    }
+  }
+  if (unresolvedPixels) *unresolvedPixels = unresolved;
 }
 
 }  // namespace pathway

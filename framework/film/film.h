@@ -65,6 +65,7 @@ class FilmBlock {
   int width() const { return width_; }
   int height() const { return height_; }
   const PixelSums& at(int x, int y) const { return sums_[(y - y0_) * width_ + (x - x0_)]; }
+  PixelSums& at(int x, int y) { return sums_[(y - y0_) * width_ + (x - x0_)]; }
 
  private:
   int x0_ = 0, y0_ = 0, width_ = 0, height_ = 0;
@@ -87,7 +88,9 @@ class Film {
  public:
   Film(int width, int height);
 
-  void merge(const FilmBlock& block);
+  // Adds the block's sums to the film and leaves the block empty for the next pass: one pass over
+  // its memory instead of a merge and a separate clear.
+  void merge(FilmBlock& block);
   void clear();
 
   // Σ w·L / Σ w per pixel. Where |Σ w| is tiny next to Σ |w| (possible with a negative-lobed
@@ -96,6 +99,9 @@ class Film {
   // Estimated variance of each developed pixel value (delta method for the ratio Σ w·L / Σ w).
   Image variance() const;
   Image weights() const;  // Σ w in every channel
+  // All three in one pass over the sums (what a render hands on after every pass).
+  void developAll(Image& color, Image& variance, Image& weights,
+                  size_t* unresolvedPixels = nullptr) const;
 
   int width() const { return width_; }
   int height() const { return height_; }

@@ -78,9 +78,8 @@ RenderSession::~RenderSession() = default;
 RenderResult RenderSession::develop(std::vector<TodoRecord> todos) const {
   RenderResult result;
   const Film& film = renderer_->film();
-  result.images.color = film.develop(&result.unresolvedPixels);
-  result.images.variance = film.variance();
-  result.images.weight = film.weights();
+  film.developAll(result.images.color, result.images.variance, result.images.weight,
+                  &result.unresolvedPixels);
   result.stats = renderer_->stats();
   result.todos = std::move(todos);
   result.metadata = renderMetadata(tracer_.scene().sourcePath, sceneHash_, info_.stage, recipe_,

@@ -70,8 +70,7 @@ Renderer::~Renderer() = default;
 
 void Renderer::renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount,
                           const std::atomic<bool>* cancel) {
-  tile.block.clear();
-  tile.counters = RayCounters{};
+  tile.counters = RayCounters{};  // (the block is empty: the last merge left it so)
   const RenderContext context(tracer_, tile.counters);
   uint64_t* pixelRays = tile.rays.data();
   for (int y = tile.y0; y < tile.y1; ++y) {
@@ -108,7 +107,11 @@ bool Renderer::renderPass(const std::atomic<bool>* cancel) {
       if (!cancelled()) renderTile(tiles_[i], first, count, cancel);
     });
   });
-  if (cancelled()) return false;
+  if (cancelled()) {
+    // The finished tiles' sums belong to a pass that does not count: drop them.
+    for (Tile& tile : tiles_) tile.block.clear();
+    return false;
+  }
 
   // Merge class by class (each class in parallel, its tiles disjoint); every pixel then receives
   // its contributions in the same order whatever the thread count.
