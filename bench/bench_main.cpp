@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -107,6 +108,35 @@ int benchRays(const std::string& scenePath, int width, int repeats) {
       (rays.primary.size() + rays.incoherent.size()) / (rawPrimary + rawBounce) * 1e-6;
   row("camera + bounce: raw Embree (same mix)", rawMix, rawMix);
   row("camera + bounce: renderer (bench-bounce)", rate(rendererBounceRays, rendererBounce), rawMix);
+
+  // What the BVH flags cost. Pathway always traces robustly (rays through shared edges never
+  // slip between triangles: the closed-furnace and watertightness tests need it); it builds
+  // compact BVHs only for large scenes (ray_tracer.h), where the memory per triangle matters.
+  std::printf("\n%-40s %12s %10s\n", "Embree scene flags (raw)", "Mrays/s", "vs 1st");
+  const RTCSceneFlags flagSets[] = {RTC_SCENE_FLAG_ROBUST,
+                                    RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_COMPACT,
+                                    RTC_SCENE_FLAG_NONE, RTC_SCENE_FLAG_COMPACT};
+  const char* flagNames[] = {"robust", "robust + compact", "neither", "compact"};
+  for (const auto* set : {&rays.primary, &rays.incoherent}) {
+    // Interleaved, best of `repeats` each: every flag set sees the same moments of load.
+    std::vector<std::unique_ptr<RawEmbree>> bvhs;
+    for (RTCSceneFlags flags : flagSets) bvhs.push_back(std::make_unique<RawEmbree>(scene, flags));
+    std::vector<double> best(bvhs.size(), 1e30);
+    for (int r = 0; r < repeats; ++r)
+      for (size_t i = 0; i < bvhs.size(); ++i) {
+        const std::vector<Ray>& rayList = *set;
+        std::vector<float> sink(rayList.size());
+        best[i] = std::min(best[i], secondsOf([&] {
+                             tbb::parallel_for(size_t(0), rayList.size(), [&](size_t k) {
+                               sink[k] = bvhs[i]->intersect(rayList[k]);
+                             });
+                           }));
+      }
+    for (size_t i = 0; i < bvhs.size(); ++i)
+      row((std::string(set == &rays.primary ? "primary: " : "diffuse bounce: ") + flagNames[i])
+              .c_str(),
+          rate(set->size(), best[i]), rate(set->size(), best[0]));
+  }
   return 0;
 }
 

@@ -6,16 +6,19 @@
 #include <embree3/rtcore.h>
 
 #include "core/error.h"
+#include "scene/ray_tracer.h"
 #include "scene/scene.h"
 
 namespace pathway::bench {
 
 class RawEmbree {
  public:
-  explicit RawEmbree(const Scene& s) {
+  // The default flags are RayTracer's, so that both trace the same kind of BVH; the benchmark
+  // of ray queries also measures others (what robust traversal costs, what compact saves).
+  explicit RawEmbree(const Scene& s) : RawEmbree(s, bvhFlags(s.triangleCount())) {}
+  RawEmbree(const Scene& s, RTCSceneFlags flags) {
     if (!device_) throw PathwayError("could not create an Embree device");
-    // The same flags as RayTracer, so that both trace the same kind of BVH.
-    rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_COMPACT);
+    rtcSetSceneFlags(scene_, flags);
     for (uint32_t i = 0; i < s.meshes.size(); ++i) {
       RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
       rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,

@@ -116,5 +116,12 @@ TEST(RayTracer, ShadowRayToALightPointIsNotBlockedByEitherEnd) {
   }
 }
 
+// Every scene is traced robustly; only large ones trade speed for compact memory.
+TEST(RayTracer, BvhIsRobustAlwaysAndCompactOnlyForLargeScenes) {
+  EXPECT_EQ(bvhFlags(32), RTC_SCENE_FLAG_ROBUST);
+  EXPECT_EQ(bvhFlags(kCompactBvhFromTriangles - 1), RTC_SCENE_FLAG_ROBUST);
+  EXPECT_EQ(bvhFlags(kCompactBvhFromTriangles), RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_COMPACT);
+}
+
 }  // namespace
 }  // namespace pathway

@@ -46,6 +46,17 @@ void throwIfEmbreeFailed(const std::string& what) {
   }
 }
 
+}  // namespace
+
+RTCSceneFlags bvhFlags(size_t triangles) {
+  // Robust always. Compact nodes save memory per triangle but trace slower
+  // (docs/benchmarks.md), so only scenes large enough for memory to matter get them.
+  return triangles >= kCompactBvhFromTriangles ? RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_COMPACT
+                                               : RTC_SCENE_FLAG_ROBUST;
+}
+
+namespace {
+
 RTCRay toEmbree(const Ray& ray) {
   RTCRay r;
   r.org_x = ray.origin.x;
@@ -71,7 +82,7 @@ RayTracer::RayTracer(const Scene& scene) : scene_(scene), sceneHash_(scene.conte
   rtcScene_ = rtcNewScene(device_);
   // Robust traversal: rays through shared edges and vertices never slip between two triangles,
   // which matters for closed scenes such as the furnace.
-  rtcSetSceneFlags(rtcScene_, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_COMPACT);
+  rtcSetSceneFlags(rtcScene_, bvhFlags(scene.triangleCount()));
   for (uint32_t meshIndex = 0; meshIndex < scene.meshes.size(); ++meshIndex) {
     const Mesh& mesh = scene.meshes[meshIndex];
     RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);

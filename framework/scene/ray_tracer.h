@@ -20,6 +20,11 @@ struct LoggedRay {
   bool occlusionOnly;  // occluded() rather than intersect()
 };
 
+// Scenes with at least this many triangles get Embree's compact BVH (less memory, slower rays).
+constexpr size_t kCompactBvhFromTriangles = 100000;
+// The Embree scene flags RayTracer builds with for a scene of `triangles` triangles.
+RTCSceneFlags bvhFlags(size_t triangles);
+
 class RayTracer {
  public:
   explicit RayTracer(const Scene& scene);  // builds the BVH; the scene must outlive the tracer
