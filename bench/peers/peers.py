@@ -7,7 +7,9 @@ Run with the virtual environment's python (scripts/bench peers sets it up):
 One run measures, in this order (docs/benchmarks.md, "Peers: Mitsuba 3"):
   1. time: Pathway `stage5@ref` (whole process and its --timings render) and Mitsuba
      `scalar_rgb` and `llvm_ad_rgb` (process to first image, first render, later renders) on the
-     same image: 256x256, 64 spp, box filter of one pixel, independent sampler, all threads;
+     same image: 256x256, 64 spp, box filter of one pixel, all threads, Pathway with stage 5's
+     own sampler (Owen-scrambled Sobol'; --sampler picks another) and Mitsuba with its
+     independent one;
   2. depth: Pathway's max-depth d against Mitsuba's max_depth d + 1 (and d, to show the
      mapping is not off by one), by global means;
   3. agreement: global channel means within 1 % and every region of a 4x4 grid within 3 %, on
@@ -50,6 +52,8 @@ def parse_args():
     p.add_argument("--spp", type=int, default=64, help="timed image's samples per pixel")
     p.add_argument("--max-depth", type=int, default=5, help="Pathway's; Mitsuba gets one more")
     p.add_argument("--rr-depth", type=int, default=3, help="the same number in both")
+    p.add_argument("--sampler", default="sobol",
+                   help="Pathway's sampler (stage 5's default: sobol; or independent, stratified)")
     p.add_argument("--repeats", type=int, default=3, help="timed runs; the fastest is kept")
     p.add_argument("--agree-width", type=int, default=64)
     p.add_argument("--agree-spp", type=int, default=1024, help="per render, --agree-seeds renders")
@@ -171,7 +175,7 @@ class Renderers:
         depth = a.max_depth if max_depth is None else max_depth
         cmd = [a.pathway, "render", a.scene, "-i", "stage5@ref", "--spp", str(spp),
                "--width", str(width), "--height", str(width), "--filter", "box",
-               "--filter-radius", "0.5", "--sampler", "independent", "--seed", str(seed),
+               "--filter-radius", "0.5", "--sampler", a.sampler, "--seed", str(seed),
                "--threads", "0", "-p", f"max-depth={depth}", "-p", f"rr-depth={a.rr_depth}",
                "-p", "nee=on", "-p", "light-pick=power", "-q", "--timings", "-o", str(exr)]
         env = dict(os.environ)

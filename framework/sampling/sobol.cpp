@@ -70,45 +70,35 @@ constexpr std::array<Matrix, kSobolDimensions> buildMatrices() {
 // Built by the compiler: no start-up cost and no static-initialisation-order questions.
 constexpr std::array<Matrix, kSobolDimensions> kMatrices = buildMatrices();
 
-// The first four dimensions (all the sampler draws from: it pads in blocks of four) also as
-// byte tables: the product with one byte of the index is one lookup, so a point costs four
-// lookups instead of a loop over 32 index bits. 16 KiB, built by the compiler as well.
-using ByteTables = std::array<std::array<std::array<uint32_t, 256>, 4>, 4>;  // [dim][byte][value]
-constexpr ByteTables buildByteTables() {
-  ByteTables tables{};
-  for (uint32_t d = 0; d < 4; ++d)
-    for (uint32_t byte = 0; byte < 4; ++byte)
-      for (uint32_t value = 0; value < 256; ++value) {
-        uint32_t x = 0;
-        for (uint32_t bit = 0; bit < 8; ++bit)
-          if (value & (1u << bit)) x ^= kMatrices[d][8 * byte + bit];
-        tables[d][byte][value] = x;
-      }
-  return tables;
-}
-constexpr ByteTables kByteTables = buildByteTables();
-
-// The same products for the Owen-scrambled path (owenScrambledSobol), with both ends bit-reversed:
-// the input byte is a byte of the reversed index, the output the reversed coordinate.
 constexpr uint32_t reverseBitsConstexpr(uint32_t x) {
   uint32_t r = 0;
   for (uint32_t bit = 0; bit < 32; ++bit)
     if (x & (1u << bit)) r |= 1u << (31 - bit);
   return r;
 }
-constexpr ByteTables buildReversedByteTables() {
+
+// The first four dimensions (all the sampler draws from: it pads in blocks of four) also as
+// byte tables: the product with one byte of the index is one lookup, so a point costs four
+// lookups instead of a loop over 32 index bits. 16 KiB each, built by the compiler as well.
+// `reversed`: the tables of the Owen-scrambled path (owenScrambledSobolBlock), with both ends
+// bit-reversed: the input byte is a byte of the reversed index, the output the reversed value.
+using ByteTables = std::array<std::array<std::array<uint32_t, 256>, 4>, 4>;  // [dim][byte][value]
+constexpr ByteTables buildByteTables(bool reversed) {
   ByteTables tables{};
   for (uint32_t d = 0; d < 4; ++d)
     for (uint32_t byte = 0; byte < 4; ++byte)
       for (uint32_t value = 0; value < 256; ++value) {
         uint32_t x = 0;
-        for (uint32_t bit = 0; bit < 8; ++bit)  // bit j of the reversed index is bit 31 - j
-          if (value & (1u << bit)) x ^= kMatrices[d][31 - (8 * byte + bit)];
-        tables[d][byte][value] = reverseBitsConstexpr(x);
+        for (uint32_t bit = 0; bit < 8; ++bit) {
+          const uint32_t indexBit = 8 * byte + bit;  // bit j of the reversed index is bit 31 - j
+          if (value & (1u << bit)) x ^= kMatrices[d][reversed ? 31 - indexBit : indexBit];
+        }
+        tables[d][byte][value] = reversed ? reverseBitsConstexpr(x) : x;
       }
   return tables;
 }
-constexpr ByteTables kReversedByteTables = buildReversedByteTables();
+constexpr ByteTables kByteTables = buildByteTables(false);
+constexpr ByteTables kReversedByteTables = buildByteTables(true);
 
 uint32_t tableSample(uint32_t index, uint32_t dimension) {
   const auto& t = kByteTables[dimension];
