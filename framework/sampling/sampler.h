@@ -52,9 +52,8 @@ class Sampler {
 };
 
 // Walks the dimensions of one camera sample in order. Integrators take their numbers from here.
-// It draws them four at a time (Sampler::getBlock): the values of a block are computed together,
-// side by side, before the integrator asks for them, so a ray that needs the next bounce's
-// direction does not wait for its hashing and scrambling.
+// It draws them four at a time (Sampler::getBlock): the values of a block share work (Sobol':
+// one index shuffle; independent: one hash per pair) and are computed side by side.
 class SampleStream {
  public:
   SampleStream(const Sampler& sampler, uint32_t pixelX, uint32_t pixelY, uint32_t index)
