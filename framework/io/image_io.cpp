@@ -129,27 +129,31 @@ LoadedImage readImageFile(const std::string& path) {
       if (spec.channels[c] == name) return c;
     return -1;
   };
-  auto extract = [&](Image& image, int first, int count) {
+  // An image from three channels, found by name (a file may store them in any order).
+  auto extract = [&](Image& image, const int(&index)[3]) {
     image = Image(spec.width, spec.height);
     for (size_t i = 0; i < image.pixels.size(); ++i)
-      for (int c = 0; c < 3; ++c)
-        image.pixels[i][c] = data[i * channels + first + std::min(c, count - 1)];
+      for (int c = 0; c < 3; ++c) image.pixels[i][c] = data[i * channels + index[c]];
   };
-  const bool isColor = channels >= 3;
-  extract(loaded.images.color, 0, isColor ? 3 : 1);
-  if (channel("variance.R") >= 0) extract(loaded.images.variance, channel("variance.R"), 3);
-  if (channel("weight") >= 0) extract(loaded.images.weight, channel("weight"), 1);
+  if (channel("R") >= 0 && channel("G") >= 0 && channel("B") >= 0) {
+    extract(loaded.images.color, {channel("R"), channel("G"), channel("B")});
+  } else if (channels >= 3) {  // unnamed colour: the first three channels
+    extract(loaded.images.color, {0, 1, 2});
+  } else if (channels > 0) {  // grey: the first channel in all three
+    extract(loaded.images.color, {0, 0, 0});
+  }
+  const int variance[3] = {channel("variance.R"), channel("variance.G"), channel("variance.B")};
+  if (variance[0] >= 0 && variance[1] >= 0 && variance[2] >= 0)
+    extract(loaded.images.variance, variance);
+  if (const int weight = channel("weight"); weight >= 0)
+    extract(loaded.images.weight, {weight, weight, weight});
   for (int c = 0; c < channels; ++c) {
     const std::string& name = spec.channels[c];
     const size_t dot = name.rfind('.');
     if (dot == std::string::npos || name.substr(dot) != ".R") continue;
     const std::string layer = name.substr(0, dot);
     if (layer == "variance" || channel(layer + ".G") < 0 || channel(layer + ".B") < 0) continue;
-    const int index[3] = {c, channel(layer + ".G"), channel(layer + ".B")};
-    Image& image = loaded.layers[layer];
-    image = Image(spec.width, spec.height);
-    for (size_t i = 0; i < image.pixels.size(); ++i)
-      for (int k = 0; k < 3; ++k) image.pixels[i][k] = data[i * channels + index[k]];
+    extract(loaded.layers[layer], {c, channel(layer + ".G"), channel(layer + ".B")});
   }
   for (const auto& [name, value] : spec.attributes)
     if (name.rfind("pathway:", 0) == 0) loaded.metadata[name] = value;
