@@ -78,33 +78,24 @@ constexpr uint32_t reverseBitsConstexpr(uint32_t x) {
 }
 
 // The first four dimensions (all the sampler draws from: it pads in blocks of four) also as
-// byte tables: the product with one byte of the index is one lookup, so a point costs four
-// lookups instead of a loop over 32 index bits. 16 KiB each, built by the compiler as well.
-// `reversed`: the tables of the Owen-scrambled path (owenScrambledSobolBlock), with both ends
-// bit-reversed: the input byte is a byte of the reversed index, the output the reversed value.
+// byte tables for the Owen-scrambled path (owenScrambledSobolBlock): the product with one byte of
+// the index is one lookup, so a point costs four lookups instead of a loop over 32 index bits.
+// Both ends are bit-reversed: the input byte is a byte of the reversed index (its bit j is index
+// bit 31 - j), the output is the reversed coordinate. 16 KiB, built by the compiler as well.
 using ByteTables = std::array<std::array<std::array<uint32_t, 256>, 4>, 4>;  // [dim][byte][value]
-constexpr ByteTables buildByteTables(bool reversed) {
+constexpr ByteTables buildReversedByteTables() {
   ByteTables tables{};
   for (uint32_t d = 0; d < 4; ++d)
     for (uint32_t byte = 0; byte < 4; ++byte)
       for (uint32_t value = 0; value < 256; ++value) {
         uint32_t x = 0;
-        for (uint32_t bit = 0; bit < 8; ++bit) {
-          const uint32_t indexBit = 8 * byte + bit;  // bit j of the reversed index is bit 31 - j
-          if (value & (1u << bit)) x ^= kMatrices[d][reversed ? 31 - indexBit : indexBit];
-        }
-        tables[d][byte][value] = reversed ? reverseBitsConstexpr(x) : x;
+        for (uint32_t bit = 0; bit < 8; ++bit)
+          if (value & (1u << bit)) x ^= kMatrices[d][31 - (8 * byte + bit)];
+        tables[d][byte][value] = reverseBitsConstexpr(x);
       }
   return tables;
 }
-constexpr ByteTables kByteTables = buildByteTables(false);
-constexpr ByteTables kReversedByteTables = buildByteTables(true);
-
-uint32_t tableSample(uint32_t index, uint32_t dimension) {
-  const auto& t = kByteTables[dimension];
-  return t[0][index & 0xffu] ^ t[1][(index >> 8) & 0xffu] ^ t[2][(index >> 16) & 0xffu] ^
-         t[3][index >> 24];
-}
+constexpr ByteTables kReversedByteTables = buildReversedByteTables();
 
 // Laine & Karras (2011), with Burley's constants. The constants are even, so `x * c` only carries
 // bits upwards: bit j of the result depends on bits 0..j of the input alone. That makes it a
@@ -131,7 +122,6 @@ uint32_t reverseBits(uint32_t x) {
 
 uint32_t sobolSample(uint32_t index, uint32_t dimension) {
   assert(dimension < kSobolDimensions);
-  if (dimension < 4) return tableSample(index, dimension);
   const Matrix& columns = kMatrices[dimension];
   uint32_t x = 0;
   for (uint32_t k = 0; index != 0; index >>= 1, ++k) {
