@@ -25,6 +25,7 @@ constexpr uint64_t kStrataShuffleSalt = 0x535452415441;  // "STRATA"
 uint32_t sobolShuffleSeed(uint64_t pixelKey, uint32_t dimension) {
   return static_cast<uint32_t>(hashCombine(pixelKey ^ kIndexShuffleSalt, dimension / 4));
 }
+
 // Dimensions firstDimension .. + 3 (one block of four) of sample `index`, as 32-bit fractions.
 void sobolBlock(uint64_t pixelKey, uint32_t index, uint32_t firstDimension, uint32_t values[4]) {
   // One hash per pair of dimensions gives both of their value seeds (its low and high halves).
