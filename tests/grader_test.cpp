@@ -206,6 +206,13 @@ TEST_P(GraderMutant, IsJudgedByItsImage) {
     EXPECT_GE(imageFailed, 1u) << mutant.description << ": no case of stage " << mutant.stage
                                << " saw the bug";
     EXPECT_EQ(crashed + timedOut, 0u);
+  } else if (mutant.expect == "crash-one") {
+    // One case crashes; the others (one before it in the same child, one after it in a new
+    // child) are judged and pass.
+    EXPECT_EQ(outcome.exitCode, 1);
+    EXPECT_EQ(crashed, 1u) << test::readTextFile((dir_ / "report/results.json").string());
+    EXPECT_EQ(failed, 1u);
+    EXPECT_EQ(lines.size(), 3u);
   } else {
     // Every case of the stage fails with the reason; the grader itself finishes.
     EXPECT_EQ(outcome.exitCode, 1);

@@ -52,7 +52,10 @@ struct GradeOptions {
   int calibrate = 0;                     // > 0: grade this many seeds per case, in this process
   std::vector<uint32_t> calibrationSpp;  // empty: each case's own
   bool quiet = false;
-  std::string renderCase, renderOutput;  // a child's work: one case into one file
+  // A child's work: these cases, each within its limit in seconds, into this folder.
+  std::vector<std::string> renderCases;
+  std::vector<double> renderLimits;
+  std::string renderOutput;
 };
 
 std::vector<const GradingCase*> selectedCases(const GradeOptions& options) {
@@ -229,7 +232,7 @@ void listCases() {
 }
 
 int run(const GradeOptions& options) {
-  const bool writesReport = options.renderCase.empty() && !options.makeReferences &&
+  const bool writesReport = options.renderCases.empty() && !options.makeReferences &&
                             options.calibrate == 0 && options.submissions.empty() &&
                             options.submission.empty() && !options.listCases;
   if (writesReport) checkReportFolder(options.report);  // before any work, not after it
@@ -237,9 +240,10 @@ int run(const GradeOptions& options) {
     listCases();
     return 0;
   }
-  if (!options.renderCase.empty()) {
-    renderGradingCase(findGradingCase(options.renderCase), gradingRun(options),
-                      options.renderOutput);
+  if (!options.renderCases.empty()) {
+    std::vector<const GradingCase*> cases;
+    for (const std::string& id : options.renderCases) cases.push_back(&findGradingCase(id));
+    renderGradingCases(cases, options.renderLimits, gradingRun(options), options.renderOutput);
     return 0;
   }
   if (options.makeReferences) return makeReferences(options);
@@ -338,7 +342,8 @@ Command addGradeCommand(CLI::App& app) {
                    "With --calibrate: these spp instead of each case's (references made first)")
       ->check(CLI::Range(1u, 1u << 16));
   grade->add_flag("-q,--quiet", options->quiet, "No progress or summary");
-  grade->add_option("--render-case", options->renderCase)->group("");  // a child's work
+  grade->add_option("--render-case", options->renderCases)->group("");  // a child's work
+  grade->add_option("--render-limit", options->renderLimits)->group("");
   grade->add_option("--render-output", options->renderOutput)->group("");
   return {grade, [options] { return run(*options); }};
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -37,47 +38,105 @@ std::vector<std::string> todoSites(const std::map<std::string, std::string>& met
   return sites;
 }
 
-CaseResult gradeCase(const GradingCase& gradingCase, const GradingRun& run,
-                     const std::string& workFolder, const ComparisonSettings& settings) {
+// How a case's render went: its image, or why there is none.
+struct RenderOutcome {
+  std::optional<LoadedImage> image;
+  bool crashed = false;
+  bool timedOut = false;
+  std::string problem;
+};
+
+// The parent's own limit on a child, on top of its cases' limits: the child's alarms end it
+// first; this only catches a stage that blocks SIGALRM.
+constexpr double kChildGraceSeconds = 10.0;
+
+// Renders `cases` (with their limits) with `seed` in as few child processes as crashes and hangs
+// allow: one child renders them all in order; when it stops early, the case it was on fails and
+// the cases after it go to a new child.
+std::vector<RenderOutcome> renderInChildren(const std::vector<const GradingCase*>& cases,
+                                            const std::vector<double>& limits,
+                                            const GradingRun& run, uint64_t seed,
+                                            const std::string& workFolder) {
+  std::vector<RenderOutcome> outcomes(cases.size());
+  GradingRun once = run;
+  once.seed = seed;
+  for (size_t next = 0; next < cases.size();) {
+    const std::vector<const GradingCase*> batch(cases.begin() + next, cases.end());
+    const std::vector<double> batchLimits(limits.begin() + next, limits.end());
+    double total = kChildGraceSeconds;
+    for (double limit : batchLimits) total += limit;
+    const std::string log =
+        workFolder + "/" + batch.front()->id() + "-" + std::to_string(seed) + ".log";
+    ChildOutcome child =
+        runChild(renderCaseArguments(batch, batchLimits, once, workFolder), total, log);
+    // Images are written whole or not at all (image_io.h): each one there is a finished case.
+    for (; next < cases.size(); ++next) {
+      const std::string image = caseOutput(workFolder, *cases[next], seed);
+      if (!fs::exists(image)) break;
+      try {
+        outcomes[next].image = readImageFile(image);
+      } catch (const std::exception& error) {
+        outcomes[next].problem = error.what();
+      }
+    }
+    if (next == cases.size()) break;
+    // The child stopped on cases[next].
+    if (child.signal == SIGALRM) {  // its own alarm: that case's time limit
+      child.signal = 0;
+      child.timedOut = true;
+    }
+    RenderOutcome& failed = outcomes[next];
+    failed.crashed = child.signal != 0;
+    failed.timedOut = child.timedOut;
+    const std::string what =
+        child.succeeded() ? "stopped without writing its image" : child.describe(limits[next]);
+    failed.problem =
+        "your stage " + what + " while rendering " + cases[next]->scene + ":\n" + child.output;
+    ++next;
+  }
+  return outcomes;
+}
+
+// Long enough for a correct stage on a slow machine, short enough that a stage stuck in a loop
+// cannot run a whole class (or Gradescope's time limit) out.
+double caseLimit(const GradingRun& run, const GradingReference& reference) {
+  return std::min(run.timeLimit,
+                  std::max(kMinimumCaseSeconds, kCaseTimeFactor * reference.secondsPerRender));
+}
+
+CaseResult caseHeader(const GradingCase& gradingCase) {
   CaseResult result;
   result.id = gradingCase.id();
   result.title = "Stage " + std::to_string(gradingCase.stage) + " · " + gradingCase.name;
   result.purpose = gradingCase.purpose;
   result.stage = gradingCase.stage;
+  return result;
+}
+
+void takeProblem(CaseResult& result, const RenderOutcome& outcome) {
+  result.crashed = outcome.crashed;
+  result.timedOut = outcome.timedOut;
+  result.problem = outcome.problem;
+}
+
+// Judges a case from its first render; a statistical failure is confirmed with a second seed.
+void gradeCase(CaseResult& result, const GradingCase& gradingCase, const GradingRun& run,
+               const GradingReference& reference, double limit, const RenderOutcome& first,
+               const std::string& workFolder, const ComparisonSettings& settings) {
   try {
-    const GradingReference reference =
-        readGradingReference(run.references + "/" + gradingCase.referenceFile());
-    // Long enough for a correct stage on a slow machine, short enough that a stage stuck in a
-    // loop cannot run a whole class (or Gradescope's time limit) out.
-    const double limit = std::min(
-        run.timeLimit, std::max(kMinimumCaseSeconds, kCaseTimeFactor * reference.secondsPerRender));
-    // Renders the case with `seed`; nullopt (and the reason in `result`) when the stage failed.
-    auto render = [&](uint64_t seed) -> std::optional<LoadedImage> {
-      GradingRun once = run;
-      once.seed = seed;
-      const std::string output = workFolder + "/" + result.id + "-" + std::to_string(seed);
-      const ChildOutcome child =
-          runChild(renderCaseArguments(gradingCase, once, output + ".exr"), limit, output + ".log");
-      if (child.succeeded()) return readImageFile(output + ".exr");
-      result.crashed = child.signal != 0;
-      result.timedOut = child.timedOut;
-      result.problem = "your stage " + child.describe(limit) + " while rendering " +
-                       gradingCase.scene + ":\n" + child.output;
-      return std::nullopt;
-    };
-    const std::optional<LoadedImage> first = render(run.seed);
-    if (!first) return result;
-    judgeAgainstReference(result, *first, reference, settings);
+    if (!first.image) return takeProblem(result, first);
+    judgeAgainstReference(result, *first.image, reference, settings);
     const bool statistical = result.compared && result.comparison.hardFailures.empty() &&
                              result.todos.empty() && result.problem.empty();
     if (!result.passed && statistical) {
       // A correct stage fails a case by chance about once in a thousand renders; a wrong one
       // fails again. So a failure counts only when a render with another seed fails too.
       const uint64_t seed = run.seed + kConfirmationSeedOffset;
+      const RenderOutcome again =
+          renderInChildren({&gradingCase}, {limit}, run, seed, workFolder).front();
+      if (!again.image) return takeProblem(result, again);
       CaseResult second = result;
-      const std::optional<LoadedImage> again = render(seed);
-      if (!again) return result;
-      judgeAgainstReference(second, *again, reference, settings);
+      judgeAgainstReference(second, *again.image, reference, settings);
       result.passed = second.passed;
       result.note = second.passed
                         ? "the first render failed, but a second with seed " +
@@ -87,17 +146,24 @@ CaseResult gradeCase(const GradingCase& gradingCase, const GradingRun& run,
   } catch (const std::exception& error) {
     result.problem = error.what();
   }
-  return result;
 }
 
 }  // namespace
 
-std::vector<std::string> renderCaseArguments(const GradingCase& gradingCase, const GradingRun& run,
-                                             const std::string& output) {
+std::string caseOutput(const std::string& folder, const GradingCase& gradingCase, uint64_t seed) {
+  return folder + "/" + gradingCase.id() + "-" + std::to_string(seed) + ".exr";
+}
+
+std::vector<std::string> renderCaseArguments(const std::vector<const GradingCase*>& cases,
+                                             const std::vector<double>& limits,
+                                             const GradingRun& run, const std::string& folder) {
   // `pathway grade` reads these (framework/app/grade_command.cpp).
   std::vector<std::string> arguments = {
-      currentExecutable(), "grade", "--render-case", gradingCase.id(),
-      "--render-output",   output,  "--seed",        std::to_string(run.seed)};
+      currentExecutable(), "grade", "--render-output", folder, "--seed", std::to_string(run.seed)};
+  for (size_t i = 0; i < cases.size(); ++i) {
+    arguments.insert(arguments.end(), {"--render-case", cases[i]->id()});
+    arguments.insert(arguments.end(), {"--render-limit", std::to_string(limits[i])});
+  }
   if (run.together) arguments.push_back("--together");
   if (run.gradeReference) arguments.push_back("--grade-reference");
   for (const std::string& library : run.stageLibraries) {
@@ -107,23 +173,34 @@ std::vector<std::string> renderCaseArguments(const GradingCase& gradingCase, con
   return arguments;
 }
 
-void renderGradingCase(const GradingCase& gradingCase, const GradingRun& run,
-                       const std::string& output) {
+void renderGradingCases(const std::vector<const GradingCase*>& cases,
+                        const std::vector<double>& limits, const GradingRun& run,
+                        const std::string& folder) {
   limitThisChild(64ull << 20);  // a render and its log need far less than 64 MiB
-  bool registered = run.stageLibraries.empty();
+  if (limits.size() != cases.size())
+    throw PathwayError("internal: " + std::to_string(cases.size()) + " cases but " +
+                       std::to_string(limits.size()) + " time limits");
+  std::vector<int> registeredStages;
   for (const std::string& library : run.stageLibraries)
-    for (int stage : loadStageLibrary(library)) registered |= stage == gradingCase.stage;
-  if (!registered)
-    throw PathwayError("no stage library given registers stage " +
-                       std::to_string(gradingCase.stage) +
-                       " (does its file end with its registerStage line?)");
-  const RenderRecipe recipe =
-      gradingCase.recipe(run.gradeReference ? Variant::Reference : Variant::Student,
-                         run.together ? EarlierStages::Own : EarlierStages::Reference, run.seed);
-  const Scene scene = loadScene(run.scenes + "/" + gradingCase.scene);
-  const RayTracer tracer(scene);
-  const RenderResult result = runRender(tracer, recipe);
-  writeExr(output, result.images, result.metadata);
+    for (int stage : loadStageLibrary(library)) registeredStages.push_back(stage);
+  for (size_t i = 0; i < cases.size(); ++i) {
+    const GradingCase& gradingCase = *cases[i];
+    // The case's own deadline: past it, SIGALRM ends this process (its default action).
+    alarm(static_cast<unsigned>(std::ceil(limits[i])));
+    if (!run.stageLibraries.empty() && std::find(registeredStages.begin(), registeredStages.end(),
+                                                 gradingCase.stage) == registeredStages.end())
+      throw PathwayError("no stage library given registers stage " +
+                         std::to_string(gradingCase.stage) +
+                         " (does its file end with its registerStage line?)");
+    const RenderRecipe recipe =
+        gradingCase.recipe(run.gradeReference ? Variant::Reference : Variant::Student,
+                           run.together ? EarlierStages::Own : EarlierStages::Reference, run.seed);
+    const Scene scene = loadScene(run.scenes + "/" + gradingCase.scene);
+    const RayTracer tracer(scene);
+    const RenderResult result = runRender(tracer, recipe);
+    writeExr(caseOutput(folder, gradingCase, run.seed), result.images, result.metadata);
+  }
+  alarm(0);
 }
 
 void judgeAgainstReference(CaseResult& result, const LoadedImage& render,
@@ -160,12 +237,44 @@ GradeSummary gradeStages(const GradingRun& run, const ComparisonSettings& settin
   const TemporaryFolder work("pathway-grade");  // the renders and their logs; removed at the end
   std::map<int, int> casesPerStage, done;
   for (const GradingCase* c : run.cases) ++casesPerStage[c->stage];
-  for (const GradingCase* c : run.cases) {
-    if (run.progress) std::fprintf(stderr, "grading %s ...\n", c->id().c_str());
-    CaseResult result = gradeCase(*c, run, work.path(), settings);
-    result.maxPoints = casePoints(done[c->stage]++, casesPerStage[c->stage]);
-    result.points = result.passed ? result.maxPoints : 0.0;
-    summary.cases.push_back(std::move(result));
+  // A stage's cases (consecutive in the run) render in one child, unless one crashes or hangs.
+  for (size_t first = 0; first < run.cases.size();) {
+    size_t end = first;
+    while (end < run.cases.size() && run.cases[end]->stage == run.cases[first]->stage) ++end;
+    std::vector<CaseResult> results;
+    std::vector<std::optional<GradingReference>> references;
+    std::vector<const GradingCase*> toRender;
+    std::vector<double> limits;
+    for (size_t i = first; i < end; ++i) {
+      results.push_back(caseHeader(*run.cases[i]));
+      try {
+        references.push_back(
+            readGradingReference(run.references + "/" + run.cases[i]->referenceFile()));
+        toRender.push_back(run.cases[i]);
+        limits.push_back(caseLimit(run, *references.back()));
+      } catch (const std::exception& error) {
+        references.emplace_back();
+        results.back().problem = error.what();
+      }
+    }
+    if (run.progress)
+      std::fprintf(stderr, "grading stage %d: %zu cases ...\n", run.cases[first]->stage,
+                   end - first);
+    const std::vector<RenderOutcome> outcomes =
+        renderInChildren(toRender, limits, run, run.seed, work.path());
+    for (size_t i = first, rendered = 0; i < end; ++i) {
+      CaseResult& result = results[i - first];
+      if (const auto& reference = references[i - first]) {
+        gradeCase(result, *run.cases[i], run, *reference, limits[rendered], outcomes[rendered],
+                  work.path(), settings);
+        ++rendered;
+      }
+      result.maxPoints =
+          casePoints(done[run.cases[i]->stage]++, casesPerStage[run.cases[i]->stage]);
+      result.points = result.passed ? result.maxPoints : 0.0;
+      summary.cases.push_back(std::move(result));
+    }
+    first = end;
   }
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;
