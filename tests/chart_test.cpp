@@ -170,12 +170,7 @@ TEST(ChartRuns, CsvLinesReadBackExactly) {
 
 class ChartRender : public ::testing::Test {
  protected:
-  void SetUp() override {
-    folder_ = fs::temp_directory_path() /
-              ("pathway_chart_" +
-               std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(folder_);
-  }
+  void SetUp() override { folder_ = test::freshTestFolder("pathway_chart"); }
   void TearDown() override { fs::remove_all(folder_); }
   ChartRunOptions options(int* rendered) const {
     ChartRunOptions o;

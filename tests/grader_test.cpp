@@ -3,7 +3,6 @@
 // skeletons fail on their images, a stage that crashes or hangs fails only its own case, and bad
 // input gets one message and a failed result. Output: results.json and an HTML report.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -44,13 +43,7 @@ std::vector<ResultLine> resultLines(const std::string& json) {
 
 class Grader : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("pathway_grade_" + std::to_string(::getpid()) + "_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = test::freshTestFolder("pathway_grade"); }
   void TearDown() override { fs::remove_all(dir_); }
 
   // Runs `pathway grade <arguments>` with its report in the test's folder.

@@ -1,6 +1,8 @@
 #include "run_command.h"
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -17,6 +19,16 @@ CommandOutcome runCommand(const std::string& command) {
   while (size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) output.append(buffer.data(), n);
   const int status = pclose(pipe);
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+std::filesystem::path freshTestFolder(const std::string& prefix) {
+  namespace fs = std::filesystem;
+  const fs::path folder =
+      fs::temp_directory_path() / (prefix + "_" + std::to_string(::getpid()) + "_" +
+                                   ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  return folder;
 }
 
 std::string readTextFile(const std::string& path) {

@@ -2,6 +2,7 @@
 // such commands write.
 #pragma once
 
+#include <filesystem>
 #include <string>
 
 namespace pathway::test {
@@ -12,6 +13,10 @@ struct CommandOutcome {
 };
 
 CommandOutcome runCommand(const std::string& command);
+
+// An empty folder of its own for the running test: temp/<prefix>_<pid>_<test name>, emptied if it
+// was there. The fixture removes it when the test ends.
+std::filesystem::path freshTestFolder(const std::string& prefix);
 
 // The whole of a text file ("" when it cannot be read).
 std::string readTextFile(const std::string& path);

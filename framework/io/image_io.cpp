@@ -14,13 +14,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string lowerExtension(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
-
 // Writes `pixels` (channel-interleaved) to a temporary file, then renames it into place.
 void writeAtomically(const std::string& path, const RasterHeader& header, bool eightBit,
                      const void* pixels) {

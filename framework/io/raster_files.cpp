@@ -38,26 +38,26 @@ const ImageFileModule& imageFileModule() {
   return module;
 }
 
-bool isExr(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return std::tolower(c); });
-  return extension == ".exr";
-}
-
 }  // namespace
 
 void writeRaster(const std::string& path, const RasterHeader& header, bool eightBit,
                  const void* pixels) {
-  if (isExr(path) && !eightBit)
+  if (lowerExtension(path) == ".exr" && !eightBit)
     return writeExrRaster(path, header, static_cast<const float*>(pixels));
   std::string error;
   if (!imageFileModule().write(path.c_str(), header, eightBit, pixels, error))
     throw PathwayError(path + ": writing failed: " + error);
 }
 
+std::string lowerExtension(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  return extension;
+}
+
 Raster readRaster(const std::string& path) {
-  if (isExr(path)) return readExrRaster(path);
+  if (lowerExtension(path) == ".exr") return readExrRaster(path);
   Raster raster;
   std::string error;
   if (!imageFileModule().read(path.c_str(), raster, error))

@@ -15,4 +15,7 @@ void writeRaster(const std::string& path, const RasterHeader& header, bool eight
 // Throws PathwayError naming the path and the reason.
 Raster readRaster(const std::string& path);
 
+// The file's extension in lower case, with its dot (".exr"): it picks the format.
+std::string lowerExtension(const std::string& path);
+
 }  // namespace pathway
