@@ -3,6 +3,8 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace pathway {
 
@@ -11,9 +13,14 @@ struct Command {
   std::function<int()> run;  // runs it; returns the exit status; throws PathwayError on bad input
 };
 
+// The command line's words after "--" (for pathway cluster, which passes them on).
+std::vector<std::string>& passedOnArguments();
+
 Command addRenderCommand(CLI::App& app);
 Command addGradeCommand(CLI::App& app);
 Command addChartCommand(CLI::App& app);
+Command addMergeCommand(CLI::App& app);
+Command addClusterCommand(CLI::App& app);
 Command addViewCommand(CLI::App& app);  // only when built with the viewer (PATHWAY_HAS_VIEWER)
 
 }  // namespace pathway

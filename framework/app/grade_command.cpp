@@ -47,6 +47,7 @@ struct GradeOptions {
   std::string submissions;  // a folder of submission folders
   std::string submission;   // one submission folder
   std::string output = "grade-output";
+  bool tableOnly = false;  // with --submissions: the class table from results in --output
   bool makeReferences = false;
   bool listCases = false;
   int calibrate = 0;                     // > 0: grade this many seeds per case, in this process
@@ -207,7 +208,9 @@ int gradeSubmissions(const GradeOptions& options) {
   grading.submissions = options.submissions;
   grading.output = options.output;
   grading.run = gradingRun(options);
-  const std::vector<SubmissionResult> rows = gradeClass(grading, ComparisonSettings());
+  const std::vector<SubmissionResult> rows = options.tableOnly
+                                                 ? classTableFromResults(grading)
+                                                 : gradeClass(grading, ComparisonSettings());
   if (!options.quiet) {
     for (const SubmissionResult& r : rows)
       std::printf("%-24s %5.1f / %5.1f  %s\n", r.name.c_str(), r.points, r.maxPoints,
@@ -248,6 +251,8 @@ int run(const GradeOptions& options) {
   }
   if (options.makeReferences) return makeReferences(options);
   if (options.calibrate > 0) return calibrateCases(options);
+  if (options.tableOnly && options.submissions.empty())
+    throw PathwayError("--table-only goes with --submissions (and --output)");
   if (!options.submissions.empty()) return gradeSubmissions(options);
   if (!options.submission.empty()) {
     const SubmissionResult result = gradeSubmission(
@@ -323,6 +328,9 @@ Command addGradeCommand(CLI::App& app) {
       ->add_option("--output", options->output,
                    "With --submission(s): where builds, reports, results and the class table go")
       ->capture_default_str();
+  grade->add_flag("--table-only", options->tableOnly,
+                  "With --submissions: write the class table from the results already in "
+                  "--output, grading nothing (pathway cluster grade's last step)");
   grade->add_option("--stages-library", options->stageLibraries,
                     "Grade the stages of this library (student stage files compiled on their own; "
                     "repeatable)");

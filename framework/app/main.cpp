@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <string>
 #include <vector>
 
 #include "app/commands.h"
@@ -11,18 +12,32 @@ int main(int argc, char** argv) {
   CLI::App app{"Pathway: from pixel filtering to path tracing, one stage at a time."};
   app.require_subcommand(1);
   std::vector<pathway::Command> commands = {
-      pathway::addRenderCommand(app), pathway::addGradeCommand(app), pathway::addChartCommand(app)};
+      pathway::addRenderCommand(app), pathway::addGradeCommand(app), pathway::addChartCommand(app),
+      pathway::addMergeCommand(app), pathway::addClusterCommand(app)};
 #ifdef PATHWAY_HAS_VIEWER
   commands.push_back(pathway::addViewCommand(app));
 #endif
+  // What follows "--" is passed on as it is (pathway cluster hands it to the commands it runs).
+  // It is split off here because CLI11 2.1 refuses it after a long option that takes a value.
+  int parsed = argc;
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "--") {
+      parsed = i;
+      pathway::passedOnArguments().assign(argv + i + 1, argv + argc);
+      break;
+    }
   try {
-    app.parse(argc, argv);
+    app.parse(parsed, argv);
   } catch (const CLI::ParseError& error) {
     return app.exit(error);
   }
   try {
-    for (const pathway::Command& command : commands)
-      if (command.app->parsed()) return command.run();
+    for (const pathway::Command& command : commands) {
+      if (!command.app->parsed()) continue;
+      if (!pathway::passedOnArguments().empty() && command.app->get_name() != "cluster")
+        throw pathway::PathwayError("only pathway cluster takes arguments after --");
+      return command.run();
+    }
   } catch (const pathway::PathwayError& error) {
     std::fprintf(stderr, "pathway: error: %s\n", error.what());
     return 1;

@@ -9,6 +9,8 @@
 #include "app/progress_bar.h"
 #include "app/shared_options.h"
 #include "core/error.h"
+#include "io/partial_film.h"
+#include "io/raster_files.h"
 #include "render/render_session.h"
 #include "scene/gltf_loader.h"
 
@@ -26,7 +28,20 @@ struct RenderOptions {
   bool list = false;
   bool quiet = false;
   bool timings = false;
+  bool checkOnly = false;
+  std::string samples;  // "A:B": only sample indices [A, B) of the --spp, written as a part
 };
+
+// "A:B" with A < B; throws PathwayError naming the option otherwise.
+void parseSampleRange(const std::string& text, RenderSettings& settings) {
+  unsigned long begin = 0, end = 0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%lu:%lu%c", &begin, &end, &extra) != 2 || begin >= end ||
+      end > 0xffffffffu)
+    throw PathwayError("--samples '" + text + "': expected A:B with A < B (sample indices)");
+  settings.sampleBegin = static_cast<uint32_t>(begin);
+  settings.sampleEnd = static_cast<uint32_t>(end);
+}
 
 void listIntegrators() {
   std::printf("Integrators (choose with --integrator NAME, set parameters with -p name=value):\n");
@@ -53,8 +68,10 @@ int run(const RenderOptions& options, const LaunchClock& clock) {
   RenderSettings& s = recipe.settings;
   s.samplesPerPixel = options.spp;
   s.threads = options.threads;
+  if (!options.samples.empty()) parseSampleRange(options.samples, s);
+  s.check();
   // Sixteen passes keep the progress bar moving; more would only add merge work.
-  s.samplesPerPass = std::max(1u, options.spp / 16);
+  s.samplesPerPass = std::max(1u, s.samplesToRender() / 16);
   for (const std::string& output : options.outputs) checkImagePath(output);
 
   const double startMs = clock.milliseconds();
@@ -66,19 +83,37 @@ int run(const RenderOptions& options, const LaunchClock& clock) {
   const RayTracer tracer(scene);
   const double bvhMs = clock.milliseconds();
   double firstRayMs = 0.0;
+  if (options.checkOnly) {
+    const Camera camera(scene, s.width, s.height);
+    const RenderSession session(tracer, camera, recipe);  // checks the integrator and parameters
+    std::printf("checked: %s, %s, %dx%d, samples %u:%u of %u\n", options.choices.scene.c_str(),
+                recipe.integrator.c_str(), s.width, s.height, s.firstSample(), s.endSample(),
+                s.samplesPerPixel);
+    return 0;
+  }
 
   ProgressBar progress(!options.quiet);
-  const RenderResult result = runRender(tracer, recipe, [&](const RenderStats& stats) {
+  clearTodosHit();  // from here on, every TODO that runs belongs to this render
+  const Camera camera(scene, s.width, s.height);
+  RenderSession session(tracer, camera, recipe);
+  session.renderer().renderAll([&](const RenderStats& stats) {
     if (firstRayMs == 0.0) firstRayMs = clock.milliseconds() - stats.seconds * 1e3;
     const std::string label =
-        std::to_string(stats.samplesPerPixel) + "/" + std::to_string(s.samplesPerPixel) + " spp";
-    progress.update(static_cast<double>(stats.samplesPerPixel) / s.samplesPerPixel, label.c_str());
+        std::to_string(stats.samplesPerPixel) + "/" + std::to_string(s.samplesToRender()) + " spp";
+    progress.update(static_cast<double>(stats.samplesPerPixel) / s.samplesToRender(),
+                    label.c_str());
   });
   progress.finish();
+  const RenderResult result = session.develop(todosHit());
 
   const double renderedMs = clock.milliseconds();
-  for (const std::string& output : options.outputs)
-    writeImageFile(output, result.images, result.metadata, options.exposure);
+  for (const std::string& output : options.outputs) {
+    // A part carries the film's sums, for `pathway merge`.
+    if (!options.samples.empty() && lowerExtension(output) == ".exr")
+      writePartialFilm(output, session.renderer().film(), result.images, result.metadata);
+    else
+      writeImageFile(output, result.images, result.metadata, options.exposure);
+  }
   if (options.timings)
     std::printf(
         "timings (ms %s): command starts %.1f, scene read %.1f, BVH built %.1f, first ray %.1f, "
@@ -125,7 +160,8 @@ Command addRenderCommand(CLI::App& app) {
       "  pathway render scenes/cornell_box.gltf -o box.png\n"
       "  pathway render scenes/cornell_box.gltf -i stage1@ref --filter mitchell --spp 4 -o a.exr\n"
       "  pathway render scenes/cornell_box.gltf -i stage2 -p ao-rays=4 -p ao-distance=0.3\n"
-      "  pathway render scenes/cornell_box.gltf -i stage5@ref -p nee=off -p light-pick=area");
+      "  pathway render scenes/cornell_box.gltf -i stage5@ref -p nee=off -p light-pick=area\n"
+      "  pathway render scenes/cornell_box.gltf --spp 64 --samples 0:32 -o part0.exr   (merge)");
   addSharedOptions(*render, options->choices);
   render
       ->add_option("-o,--output", options->outputs,
@@ -137,6 +173,11 @@ Command addRenderCommand(CLI::App& app) {
       ->check(CLI::Range(setting::kHeight.minValue, setting::kHeight.maxValue));
   addSettingOption(*render, setting::kThreads, options->threads);
   addSettingOption(*render, setting::kExposure, options->exposure);
+  render->add_option("--samples", options->samples,
+                     "Render only sample indices A:B of the --spp (a part: .exr outputs carry the "
+                     "film's sums, for pathway merge)");
+  render->add_flag("--check", options->checkOnly,
+                   "Check the options, the scene and the outputs' folders; render nothing");
   render->add_flag("--list", options->list, "List the integrators and their parameters, then exit");
   render->add_flag("-q,--quiet", options->quiet, "No progress bar or summary");
   render->add_flag("--timings", options->timings,

@@ -56,6 +56,11 @@ void Film::merge(FilmBlock& block) {
     }
 }
 
+Film& Film::operator+=(const Film& other) {
+  for (size_t i = 0; i < sums_.size(); ++i) sums_[i] += other.sums_[i];
+  return *this;
+}
+
 void Film::clear() {
   std::fill(sums_.begin(), sums_.end(), PixelSums{});
 }

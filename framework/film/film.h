@@ -91,6 +91,9 @@ class Film {
   // Adds the block's sums to the film and leaves the block empty for the next pass: one pass over
   // its memory instead of a merge and a separate clear.
   void merge(FilmBlock& block);
+  // Adds another film's sums pixel by pixel: two renders over disjoint sample ranges become the
+  // one render over both (up to the order of the floating-point additions).
+  Film& operator+=(const Film& other);
   void clear();
 
   // Σ w·L / Σ w per pixel. Where |Σ w| is tiny next to Σ |w| (possible with a negative-lobed
@@ -106,6 +109,7 @@ class Film {
   int width() const { return width_; }
   int height() const { return height_; }
   const PixelSums& at(int x, int y) const { return sums_[static_cast<size_t>(y) * width_ + x]; }
+  PixelSums& at(int x, int y) { return sums_[static_cast<size_t>(y) * width_ + x]; }
 
  private:
   int width_, height_;

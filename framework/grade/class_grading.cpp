@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 
 #include "core/error.h"
@@ -37,6 +39,43 @@ void failCases(GradeSummary& summary, const std::vector<const GradingCase*>& cas
     result.maxPoints = casePoints(done[c->stage]++, perStage[c->stage]);
     summary.cases.push_back(std::move(result));
   }
+}
+
+constexpr const char* kRowFile = "submission.tsv";
+
+// One line per field, "key<TAB>value"; the status on one line.
+void writeRow(const fs::path& path, const SubmissionResult& row) {
+  std::ofstream out(path);
+  std::string status = row.status;
+  std::replace_if(
+      status.begin(), status.end(), [](char c) { return c == '\n' || c == '\t'; }, ' ');
+  out << "name\t" << row.name << "\npoints\t" << row.points << "\nmaxPoints\t" << row.maxPoints
+      << "\n";
+  for (size_t stage = 0; stage < row.stagePoints.size(); ++stage)
+    out << "stage" << stage + 1 << "\t" << row.stagePoints[stage] << "\n";
+  out << "buildSeconds\t" << row.buildSeconds << "\ngradeSeconds\t" << row.gradeSeconds
+      << "\nstatus\t" << status << "\n";
+}
+
+bool readRow(const fs::path& path, SubmissionResult& row) {
+  std::ifstream in(path);
+  if (!in) return false;
+  std::map<std::string, std::string> fields;
+  for (std::string line; std::getline(in, line);) {
+    const size_t tab = line.find('\t');
+    if (tab != std::string::npos) fields[line.substr(0, tab)] = line.substr(tab + 1);
+  }
+  if (!fields.count("name") || !fields.count("status")) return false;
+  row.name = fields["name"];
+  row.points = std::atof(fields["points"].c_str());
+  row.maxPoints = std::atof(fields["maxPoints"].c_str());
+  row.stagePoints.assign(kStageCount, 0.0);
+  for (int stage = 1; stage <= kStageCount; ++stage)
+    row.stagePoints[stage - 1] = std::atof(fields["stage" + std::to_string(stage)].c_str());
+  row.buildSeconds = std::atof(fields["buildSeconds"].c_str());
+  row.gradeSeconds = std::atof(fields["gradeSeconds"].c_str());
+  row.status = fields["status"];
+  return true;
 }
 
 }  // namespace
@@ -112,6 +151,7 @@ SubmissionResult gradeSubmission(const std::string& folder, const std::string& o
   row.maxPoints = summary.maxPoints();
   row.stagePoints.assign(kStageCount, 0.0);
   for (const CaseResult& c : summary.cases) row.stagePoints[c.stage - 1] += c.points;
+  writeRow(out / kRowFile, row);
   return row;
 }
 
@@ -161,15 +201,38 @@ void writeClassTable(const ClassGrading& grading, const std::vector<SubmissionRe
 
 }  // namespace
 
-std::vector<SubmissionResult> gradeClass(const ClassGrading& grading,
-                                         const ComparisonSettings& settings) {
-  if (!fs::is_directory(grading.submissions))
-    throw PathwayError(grading.submissions + ": not a folder of submissions");
+std::vector<std::string> submissionFolders(const std::string& submissions) {
+  if (!fs::is_directory(submissions))
+    throw PathwayError(submissions + ": not a folder of submissions");
   std::vector<std::string> folders;
-  for (const auto& entry : fs::directory_iterator(grading.submissions))
+  for (const auto& entry : fs::directory_iterator(submissions))
     if (entry.is_directory()) folders.push_back(entry.path().string());
   std::sort(folders.begin(), folders.end());
-  if (folders.empty()) throw PathwayError(grading.submissions + ": holds no submission folders");
+  if (folders.empty()) throw PathwayError(submissions + ": holds no submission folders");
+  return folders;
+}
+
+std::vector<SubmissionResult> classTableFromResults(const ClassGrading& grading) {
+  std::vector<SubmissionResult> rows;
+  for (const std::string& folder : submissionFolders(grading.submissions)) {
+    const std::string name = submissionName(folder);
+    SubmissionResult row;
+    if (!readRow(fs::path(grading.output) / name / kRowFile, row)) {
+      row = SubmissionResult{};
+      row.name = name;
+      row.stagePoints.assign(kStageCount, 0.0);
+      row.status = "not graded: no results in " + (fs::path(grading.output) / name).string();
+    }
+    rows.push_back(row);
+  }
+  fs::create_directories(grading.output);
+  writeClassTable(grading, rows);
+  return rows;
+}
+
+std::vector<SubmissionResult> gradeClass(const ClassGrading& grading,
+                                         const ComparisonSettings& settings) {
+  const std::vector<std::string> folders = submissionFolders(grading.submissions);
   fs::create_directories(grading.output);
   std::vector<SubmissionResult> rows;
   for (const std::string& folder : folders) {

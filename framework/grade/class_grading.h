@@ -30,8 +30,16 @@ struct SubmissionResult {
 std::vector<SubmissionResult> gradeClass(const ClassGrading& grading,
                                          const ComparisonSettings& settings);
 
-// One submission: builds `folder` in `output`/build and writes `output`/report/ and
-// `output`/results.json (Gradescope's autograder runs this for each student).
+// The class table from results already in `grading.output` (graded one submission at a time,
+// e.g. by the tasks of a cluster job): a submission without results gets a row that says so.
+std::vector<SubmissionResult> classTableFromResults(const ClassGrading& grading);
+
+// The submission folders in `submissions`, sorted; throws PathwayError when there are none.
+std::vector<std::string> submissionFolders(const std::string& submissions);
+
+// One submission: builds `folder` in `output`/build and writes `output`/report/,
+// `output`/results.json (Gradescope's autograder runs this for each student) and its row of the
+// class table, `output`/submission.tsv.
 SubmissionResult gradeSubmission(const std::string& folder, const std::string& output,
                                  const GradingRun& run, double buildTimeLimit,
                                  const ComparisonSettings& settings);

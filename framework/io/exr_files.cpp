@@ -56,8 +56,9 @@ Raster readExrRaster(const std::string& path) {
     if (header.width <= 0 || header.height <= 0)
       throw PathwayError(path + ": cannot read image: empty data window");
     std::vector<std::string> others;
+    // Unsigned channels are a part's film sums (io/partial_film.h), not pixel values.
     for (auto channel = exr.channels().begin(); channel != exr.channels().end(); ++channel)
-      others.push_back(channel.name());
+      if (channel.channel().type != Imf::UINT) others.push_back(channel.name());
     for (const char* name : {"R", "G", "B"}) {
       const auto found = std::find(others.begin(), others.end(), name);
       if (found == others.end()) continue;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <memory>
 
 #include "core/error.h"
@@ -18,11 +19,20 @@ namespace fs = std::filesystem;
 void writeAtomically(const std::string& path, const RasterHeader& header, bool eightBit,
                      const void* pixels) {
   checkImagePath(path);
+  writeThroughTemporary(path, [&](const std::string& temporary) {
+    writeRaster(temporary, header, eightBit, pixels);
+  });
+}
+
+}  // namespace
+
+void writeThroughTemporary(const std::string& path,
+                           const std::function<void(const std::string&)>& write) {
   const fs::path target(path);
   const fs::path temporary =
       target.parent_path() / (".partial-" + target.stem().string() + target.extension().string());
   try {
-    writeRaster(temporary.string(), header, eightBit, pixels);
+    write(temporary.string());
   } catch (const PathwayError& error) {
     std::error_code ignored;
     fs::remove(temporary, ignored);
@@ -38,8 +48,6 @@ void writeAtomically(const std::string& path, const RasterHeader& header, bool e
     throw PathwayError(path + ": could not move the finished image into place");
   }
 }
-
-}  // namespace
 
 void checkImagePath(const std::string& path) {
   const std::string ext = lowerExtension(path);

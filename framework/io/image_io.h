@@ -5,6 +5,7 @@
 // Files are written to a temporary name and renamed, so a failed write never leaves a broken file.
 #pragma once
 
+#include <functional>
 #include <map>
 #include <string>
 #include <utility>
@@ -31,6 +32,11 @@ void writePng(const std::string& path, const Image& image, float exposure);
 // Picks the format from the extension (.exr or .png); throws PathwayError for anything else.
 void writeImageFile(const std::string& path, const FilmImages& images,
                     const ImageMetadata& metadata, float exposure);
+
+// Runs `write` on a temporary name beside `path`, then renames the file into place; on failure the
+// temporary is removed and the PathwayError names `path`.
+void writeThroughTemporary(const std::string& path,
+                           const std::function<void(const std::string&)>& write);
 
 // Throws PathwayError unless `path` has a known extension and its folder exists, so a render can
 // refuse a bad output path before it starts.

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "core/error.h"
+#include "io/partial_film.h"
 
 namespace pathway {
 namespace {
@@ -38,6 +39,9 @@ ImageMetadata renderMetadata(const std::string& scenePath, const std::string& sc
       {"pathway:params", recipe.params.describe()},
       {"pathway:earlierStages", earlierStagesName(recipe.earlierStages)},
       {"pathway:spp", std::to_string(stats.samplesPerPixel)},
+      {kSampleRangeKey, std::to_string(s.firstSample()) + ":" +
+                            std::to_string(s.firstSample() + stats.samplesPerPixel)},
+      {kSampleRangeOfKey, std::to_string(s.samplesPerPixel)},
       {"pathway:sampler", samplerTypeName(s.sampler)},
       {"pathway:seed", std::to_string(s.seed)},
       {"pathway:filter", filterTypeName(s.filter)},

@@ -69,6 +69,16 @@ struct RenderSettings {
   FilterType filter = setting::kFilter;
   float filterRadius = setting::kFilterRadius.defaultValue;  // 0: the filter's natural radius
   int tileSize = setting::kTileSize.defaultValue;
+  // The sample indices this render draws: [sampleBegin, sampleEnd) of the `samplesPerPixel` a
+  // whole render would draw (sampleEnd 0: all of them). Parts of one render over disjoint ranges
+  // merge into that render's image (`pathway merge`).
+  uint32_t sampleBegin = 0;
+  uint32_t sampleEnd = 0;
+
+  uint32_t firstSample() const { return sampleBegin; }
+  uint32_t endSample() const { return sampleEnd == 0 ? samplesPerPixel : sampleEnd; }
+  uint32_t samplesToRender() const { return endSample() - firstSample(); }
+  bool isPartial() const { return firstSample() != 0 || endSample() != samplesPerPixel; }
 
   // The filter's support in pixels, with 0 decoded to the filter's natural radius.
   float filterRadiusPixels() const {

@@ -98,8 +98,8 @@ void Renderer::renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount
 bool Renderer::renderPass(const std::atomic<bool>* cancel) {
   if (finished()) return true;
   const auto start = std::chrono::steady_clock::now();
-  const uint32_t first = stats_.samplesPerPixel;
-  const uint32_t count = std::min(settings_.samplesPerPass, settings_.samplesPerPixel - first);
+  const uint32_t first = settings_.firstSample() + stats_.samplesPerPixel;
+  const uint32_t count = std::min(settings_.samplesPerPass, settings_.endSample() - first);
   auto cancelled = [cancel] { return cancel && cancel->load(std::memory_order_relaxed); };
 
   arena_->execute([&] {

@@ -25,7 +25,7 @@ namespace pathway {
 struct RenderStats {
   RayCounters counters;
   double seconds = 0.0;          // wall time spent in passes
-  uint32_t samplesPerPixel = 0;  // done so far
+  uint32_t samplesPerPixel = 0;  // done so far (of the settings' sample range)
 };
 
 class Renderer {
@@ -38,7 +38,7 @@ class Renderer {
   // Renders the next pass. Returns false (and leaves the film as it was before the pass) when
   // `cancel` became true during it.
   bool renderPass(const std::atomic<bool>* cancel = nullptr);
-  bool finished() const { return stats_.samplesPerPixel >= settings_.samplesPerPixel; }
+  bool finished() const { return stats_.samplesPerPixel >= settings_.samplesToRender(); }
 
   // Renders the remaining passes, calling `onPass` after each. Returns false when cancelled.
   bool renderAll(const std::function<void(const RenderStats&)>& onPass = {},

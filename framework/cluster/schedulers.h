@@ -1,0 +1,22 @@
+// The two ways a ClusterJob runs (cluster_job.h): on this machine, or through Slurm. Both read the
+// scripts runClusterJob wrote into the job's folder and retry failed tasks the same way.
+#pragma once
+
+#include <string>
+
+#include "cluster/cluster_job.h"
+
+namespace pathway {
+
+JobOutcome runLocally(const ClusterJob& job, const SchedulerOptions& options);
+JobOutcome runOnSlurm(const ClusterJob& job, const SchedulerOptions& options);
+
+// Where task `index`'s log goes on its first attempt (0) and on retry `attempt` (1, 2, ...);
+// `index` "%a" gives sbatch's pattern for every task of an array.
+std::string taskLogPath(const ClusterJob& job, const std::string& index, int attempt);
+// Why a script that exited with `status` failed, in words ("killed by signal 9 (Killed)").
+std::string describeExitStatus(int status);
+// Prints `line` to stderr when progress lines are on.
+void progressLine(const SchedulerOptions& options, const std::string& line);
+
+}  // namespace pathway

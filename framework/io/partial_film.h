@@ -1,0 +1,34 @@
+// A part of a render on disk. It is an ordinary EXR render (R, G, B, variance, weight and the
+// "pathway:*" metadata, so any tool can open it) that also carries the film's sums bit for bit:
+// each double as two 32-bit unsigned channels "film.<sum>.hi/.lo". `pathway merge` adds the sums
+// of parts over disjoint sample ranges, which gives the image one render over their union gives.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+
+#include "film/film.h"
+#include "io/image_io.h"
+
+namespace pathway {
+
+struct PartialFilm {
+  Film film{0, 0};
+  std::map<std::string, std::string> metadata;
+  // The part holds sample indices [begin, end) of a render of `whole` samples per pixel.
+  uint32_t begin = 0, end = 0, whole = 0;
+};
+
+// Written through a temporary file, like every image. Throws PathwayError naming `path`.
+void writePartialFilm(const std::string& path, const Film& film, const FilmImages& images,
+                      const ImageMetadata& metadata);
+// Throws PathwayError naming `path` when it cannot be read (missing, truncated) or is not a part
+// (no film sums or no sample range in its metadata).
+PartialFilm readPartialFilm(const std::string& path);
+
+// The metadata keys of a part's sample range: "A:B" and the whole render's N.
+inline constexpr const char* kSampleRangeKey = "pathway:sampleRange";
+inline constexpr const char* kSampleRangeOfKey = "pathway:sampleRangeOf";
+
+}  // namespace pathway
