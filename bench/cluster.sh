@@ -35,10 +35,9 @@ for scheduler in slurm local; do
   echo "$scheduler: $t s for 16 tasks + the merge"
   eval "tiny_$scheduler=$t"
 done
-python3 -c "
-slurm, local, cores = $tiny_slurm, $tiny_local, $cores
-print(f'per task on Slurm: {(slurm - local) * cores / 16:.2f} s of a CPU slot more than locally '
-      f'({(slurm - local) / 16:.2f} s of wall time per task with {cores} tasks at once)')"
+overhead=$(python3 -c "print(f'{($tiny_slurm - $tiny_local) * $cores / 16:.2f}')")
+echo "per task on Slurm: $overhead s of a CPU slot more than locally" \
+  "($(python3 -c "print(f'{($tiny_slurm - $tiny_local) / 16:.2f}')") s of wall time per task with $cores tasks at once)"
 
 echo
 echo "== 2. a reference render, stage5@ref 256x256, 256 spp, split into tasks of one CPU"
@@ -62,18 +61,23 @@ t=$(timed taskset -c 0 "$pathway" grade -q --submission "$work/class/student" --
 build=$(awk -F'\t' '$1 == "buildSeconds" {print $2}' "$work/graded/submission.tsv")
 grade=$(awk -F'\t' '$1 == "gradeSeconds" {print $2}' "$work/graded/submission.tsv")
 echo "one submission on one core: $t s (build $build s, grading $grade s)"
-python3 - "$t" <<'EOF'
+python3 - "$t" "$overhead" "$cores" <<'EOF'
 import math, sys
 per_submission = float(sys.argv[1])  # seconds on one core, build included
+overhead = float(sys.argv[2])        # a task's slot time on Slurm beyond its work (part 1)
+here = int(sys.argv[3])              # cores of this machine
 students, nodes, cores_per_node = 300, 20, 32
 cores = nodes * cores_per_node
 wave = 1.0  # the controller starts array tasks in about 1-second waves
 # One task per submission, one core each: every submission runs at once (300 <= 640 cores).
+# Then the class-table job, which starts a wave after the last task.
 waves = math.ceil(students / cores)
-one_each = waves * per_submission + wave
-cpu_hours = students * per_submission / 3600
+one_each = waves * (per_submission + overhead) + 2 * wave
+cpu_hours = students * (per_submission + overhead) / 3600
 print(f"on paper, {students} submissions x 5 stages on {nodes} nodes x {cores_per_node} cores "
-      f"({cores} cores): one task per submission, one core each: {waves} wave(s), about "
-      f"{one_each:.0f} s of wall time ({cpu_hours:.1f} CPU-hours in all); on this "
-      f"2-core machine the same class takes about {students * per_submission / 2 / 60:.0f} min")
+      f"({cores} cores), one task per submission on one core each: {waves} wave(s) of "
+      f"{per_submission:.1f} s + {overhead:.1f} s overhead, then the table: about "
+      f"{one_each:.0f} s of wall time ({cpu_hours:.1f} CPU-hours in all)")
+print(f"the same class on this {here}-core machine, {here} submissions at a time: about "
+      f"{students * per_submission / here / 60:.0f} min")
 EOF
