@@ -1,7 +1,7 @@
 // `pathway cluster` with the local scheduler (no Slurm needed): a render split into tasks merges
 // into the one-process render; a task that keeps failing is named with its log and the other
 // tasks' parts stay; bad options are refused before any task runs. The same jobs on a real Slurm
-// cluster: tests/cluster/.
+// cluster: tests/slurm/.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -69,6 +69,8 @@ TEST(ClusterLocal, ATaskThatKeepsFailingIsNamedAndTheOtherPartsStay) {
       << outcome.output;
   EXPECT_NE(test::readTextFile((dir / "out.cluster/logs/task-2.log").string()).find("part-0002"),
             std::string::npos);
+  EXPECT_NE(outcome.output.find("samples 4:6 are missing (task 2)"), std::string::npos)
+      << outcome.output;
   EXPECT_FALSE(fs::exists(dir / "out.exr"));
   for (const char* part : {"part-0000.exr", "part-0001.exr", "part-0003.exr"})
     EXPECT_TRUE(fs::is_regular_file(dir / "out.cluster/parts" / part)) << part;
@@ -99,6 +101,14 @@ TEST(ClusterLocal, BadOptionsAreRefusedBeforeAnyTaskRuns) {
   EXPECT_EQ(noClass.exitCode, 1);
   EXPECT_NE(noClass.output.find("not a folder of submissions"), std::string::npos)
       << noClass.output;
+  fs::create_directories(dir / "class/alice");
+  const test::CommandOutcome badGradeOption =
+      test::runCommand(kPathway + " cluster grade --submissions " + (dir / "class").string() +
+                       " --output " + (dir / "graded").string() + " -- --stage 9");
+  EXPECT_EQ(badGradeOption.exitCode, 1);
+  EXPECT_NE(badGradeOption.output.find("the grade options were refused"), std::string::npos)
+      << badGradeOption.output;
+  EXPECT_FALSE(fs::exists(dir / "graded/cluster/logs/task-0.log"));
   fs::remove_all(dir);
 }
 

@@ -33,6 +33,7 @@ struct SchedulerChoices {
 struct ClusterRenderOptions {
   SchedulerChoices job;
   uint32_t spp = setting::kSamplesPerPixel.defaultValue;
+  float exposure = setting::kExposure.defaultValue;
   std::vector<std::string> outputs;
   std::vector<std::string> renderArguments;  // the scene and render options, after --
 };
@@ -50,7 +51,7 @@ void addSchedulerOptions(CLI::App& command, SchedulerChoices& choices) {
       ->check(CLI::IsMember({"local", "slurm"}))
       ->capture_default_str();
   command.add_option("--tasks", choices.tasks, "Tasks the work is split into (array tasks)")
-      ->check(CLI::Range(1, 100000))
+      ->check(CLI::Range(1, 10000))
       ->capture_default_str();
   command.add_option("--work-dir", choices.workDir,
                      "Folder of the job's scripts, logs and parts (on a cluster: storage every "
@@ -149,7 +150,9 @@ int runClusterRender(const ClusterRenderOptions& options) {
   ClusterJob job;
   job.name = "pathway-render";
   job.folder = work.string();
-  std::vector<std::string> finish = {pathway, "merge", "-q"};
+  std::vector<std::string> finish = {pathway, "merge", "-q", "--exposure",
+                                     std::to_string(options.exposure)};
+  std::vector<std::string> ranges;  // of each task
   for (uint32_t i = 0; i < tasks; ++i) {
     const uint32_t begin = static_cast<uint32_t>(uint64_t(options.spp) * i / tasks);
     const uint32_t end = static_cast<uint32_t>(uint64_t(options.spp) * (i + 1) / tasks);
@@ -162,6 +165,7 @@ int runClusterRender(const ClusterRenderOptions& options) {
                              threads, "-q", "-o", part});
     job.tasks.push_back({quoted(line)});
     finish.push_back(part);
+    ranges.push_back(std::to_string(begin) + ":" + std::to_string(end));
   }
   for (const std::string& output : options.outputs) {
     finish.push_back("-o");
@@ -173,6 +177,9 @@ int runClusterRender(const ClusterRenderOptions& options) {
   printRetried(outcome);
   if (!outcome.finishRan) {
     printFailures(outcome);
+    for (const TaskOutcome* task : outcome.failedTasks())
+      std::fprintf(stderr, "pathway: samples %s are missing (task %d)\n",
+                   ranges[task->index].c_str(), task->index);
     std::fprintf(stderr,
                  "pathway: the image was not merged; the parts that finished are in %s/parts\n",
                  job.folder.c_str());
@@ -182,7 +189,7 @@ int runClusterRender(const ClusterRenderOptions& options) {
     throw PathwayError("merging the parts " + outcome.finishReason + " (log " + outcome.finishLog +
                        ")");
   if (!options.job.quiet)
-    std::printf("rendered %u samples in %u tasks in %.1f s; merged into\n", options.spp, tasks,
+    std::printf("rendered %u samples in %u tasks and merged them in %.1f s\n", options.spp, tasks,
                 outcome.seconds);
   for (const std::string& output : options.outputs) std::printf("wrote %s\n", output.c_str());
   return 0;
@@ -195,7 +202,15 @@ int runClusterGrade(const ClusterGradeOptions& options) {
   const fs::path output = fs::absolute(options.output).lexically_normal();
   const fs::path work =
       options.job.workDir.empty() ? output / "cluster" : fs::absolute(options.job.workDir);
-  fs::create_directories(work);
+  fs::create_directories(work / "logs");
+
+  // Every submission gets the same grade options: check them once, before anything is submitted.
+  std::vector<std::string> check = {pathway, "grade", "--list-cases"};
+  check.insert(check.end(), options.gradeArguments.begin(), options.gradeArguments.end());
+  const ChildOutcome checked = runChild(check, 60.0, (work / "logs/check.log").string());
+  if (!checked.succeeded())
+    throw PathwayError("the grade options were refused (" + quoted(options.gradeArguments) +
+                       "):\n" + checked.output);
 
   ClusterJob job;
   job.name = "pathway-grade";
@@ -212,8 +227,11 @@ int runClusterGrade(const ClusterGradeOptions& options) {
                                         "--output",
                                         (output / folder.filename()).string()};
       grade.insert(grade.end(), options.gradeArguments.begin(), options.gradeArguments.end());
-      // Exit status 1 is a verdict (points lost), not a failure of the task.
-      lines.push_back(quoted(grade) + " || { status=$?; [ $status -eq 1 ] || exit $status; }");
+      // A grader that ends with points lost still writes the submission's row: a verdict. With
+      // no fresh row (the row of an earlier run removed first) the task failed.
+      const std::string row = shellQuote((output / folder.filename() / "submission.tsv").string());
+      lines.push_back("rm -f " + row);
+      lines.push_back(quoted(grade) + " || test -f " + row);
     }
     job.tasks.push_back(lines);
   }
@@ -227,12 +245,14 @@ int runClusterGrade(const ClusterGradeOptions& options) {
   grading.submissions = options.submissions;
   grading.output = output.string();
   // The finishing job wrote the table; when it did not run, write it here from what was graded.
-  const std::vector<SubmissionResult> rows = classTableFromResults(grading);
+  const bool tableWritten = outcome.finishRan && outcome.finishSucceeded;
+  const std::vector<SubmissionResult> rows =
+      tableWritten ? readClassResults(grading) : classTableFromResults(grading);
   for (const SubmissionResult& r : rows)
     std::printf("%-24s %5.1f / %5.1f  %-44s %s\n", r.name.c_str(), r.points, r.maxPoints,
                 r.status.c_str(), (output / r.name / "results.json").string().c_str());
   std::printf("class table: %s/index.html and %s/class.csv\n", output.c_str(), output.c_str());
-  if (!outcome.finishRan || !outcome.finishSucceeded) {
+  if (!tableWritten) {
     printFailures(outcome);
     if (outcome.finishRan)
       std::fprintf(stderr, "pathway: the class table job %s (log %s)\n",
@@ -269,6 +289,7 @@ Command addClusterCommand(CLI::App& app) {
       "render", "Render in --tasks sample ranges, then merge the parts into the image");
   addSchedulerOptions(*renderCommand, render->job);
   addSettingOption(*renderCommand, setting::kSamplesPerPixel, render->spp);
+  addSettingOption(*renderCommand, setting::kExposure, render->exposure);
   renderCommand->add_option("-o,--output", render->outputs, "The merged image(s): .exr or .png")
       ->required();
   renderCommand->footer("After --: the scene and the options of pathway render.");

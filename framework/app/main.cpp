@@ -17,10 +17,10 @@ int main(int argc, char** argv) {
 #ifdef PATHWAY_HAS_VIEWER
   commands.push_back(pathway::addViewCommand(app));
 #endif
-  // What follows "--" is passed on as it is (pathway cluster hands it to the commands it runs).
-  // It is split off here because CLI11 2.1 refuses it after a long option that takes a value.
+  // What follows "--" in `pathway cluster ...` is passed on as it is, to the commands its tasks
+  // run. It is split off here because CLI11 2.1 refuses it after a long option with a value.
   int parsed = argc;
-  for (int i = 1; i < argc; ++i)
+  for (int i = 2; argc > 1 && std::string(argv[1]) == "cluster" && i < argc; ++i)
     if (std::string(argv[i]) == "--") {
       parsed = i;
       pathway::passedOnArguments().assign(argv + i + 1, argv + argc);
@@ -32,12 +32,8 @@ int main(int argc, char** argv) {
     return app.exit(error);
   }
   try {
-    for (const pathway::Command& command : commands) {
-      if (!command.app->parsed()) continue;
-      if (!pathway::passedOnArguments().empty() && command.app->get_name() != "cluster")
-        throw pathway::PathwayError("only pathway cluster takes arguments after --");
-      return command.run();
-    }
+    for (const pathway::Command& command : commands)
+      if (command.app->parsed()) return command.run();
   } catch (const pathway::PathwayError& error) {
     std::fprintf(stderr, "pathway: error: %s\n", error.what());
     return 1;

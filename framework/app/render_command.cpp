@@ -32,17 +32,6 @@ struct RenderOptions {
   std::string samples;  // "A:B": only sample indices [A, B) of the --spp, written as a part
 };
 
-// "A:B" with A < B; throws PathwayError naming the option otherwise.
-void parseSampleRange(const std::string& text, RenderSettings& settings) {
-  unsigned long begin = 0, end = 0;
-  char extra = 0;
-  if (std::sscanf(text.c_str(), "%lu:%lu%c", &begin, &end, &extra) != 2 || begin >= end ||
-      end > 0xffffffffu)
-    throw PathwayError("--samples '" + text + "': expected A:B with A < B (sample indices)");
-  settings.sampleBegin = static_cast<uint32_t>(begin);
-  settings.sampleEnd = static_cast<uint32_t>(end);
-}
-
 void listIntegrators() {
   std::printf("Integrators (choose with --integrator NAME, set parameters with -p name=value):\n");
   for (const IntegratorInfo* info : allIntegrators()) {
@@ -68,7 +57,9 @@ int run(const RenderOptions& options, const LaunchClock& clock) {
   RenderSettings& s = recipe.settings;
   s.samplesPerPixel = options.spp;
   s.threads = options.threads;
-  if (!options.samples.empty()) parseSampleRange(options.samples, s);
+  if (!options.samples.empty() && !parseSampleRange(options.samples, s.sampleBegin, s.sampleEnd))
+    throw PathwayError("--samples '" + options.samples +
+                       "': expected A:B with A < B (sample indices)");
   s.check();
   // Sixteen passes keep the progress bar moving; more would only add merge work.
   s.samplesPerPass = std::max(1u, s.samplesToRender() / 16);

@@ -1,7 +1,5 @@
 #include "cluster/cluster_job.h"
 
-#include <sys/stat.h>
-
 #include <cstdio>
 #include <cstring>
 #include <filesystem>

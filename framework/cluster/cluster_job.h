@@ -5,7 +5,7 @@
 //
 //   <folder>/task.sh     array task $SLURM_ARRAY_TASK_ID: one `case` branch per task
 //   <folder>/finish.sh   the finishing step
-//   <folder>/logs/       task-<i>.log (and task-<i>.retry.log), finish.log
+//   <folder>/logs/       task-<i>.log (and task-<i>.retry1.log ...), finish.log
 #pragma once
 
 #include <string>
@@ -25,7 +25,7 @@ enum class SchedulerKind { Local, Slurm };
 
 struct SchedulerOptions {
   SchedulerKind kind = SchedulerKind::Local;
-  int workers = 0;             // local: tasks at once (0: one per core)
+  int workers = 0;             // local: tasks at once (0: cores / cpusPerTask)
   double taskTimeLimit = 0.0;  // seconds a task may run (0: no limit); Slurm's --time
   int cpusPerTask = 1;         // Slurm's --cpus-per-task
   int maxRunning = 0;          // Slurm: array tasks at once (0: as many as the cluster gives)
@@ -39,7 +39,6 @@ struct SchedulerOptions {
 struct TaskOutcome {
   int index = 0;
   bool succeeded = false;
-  std::string state;   // COMPLETED, FAILED, TIMEOUT, CANCELLED, ... (local runs use Slurm's words)
   std::string reason;  // for a failure: "exited with status 1", "killed by signal 9", ...
   std::string log;     // the last attempt's log
   std::vector<std::string> failures;  // every failed attempt: "<reason> (log <path>)"
@@ -52,10 +51,8 @@ struct JobOutcome {
   bool finishSucceeded = false;
   std::string finishLog;
   std::string finishReason;
-  double seconds = 0.0;             // wall time from submission to the end
-  std::vector<std::string> jobIds;  // Slurm: every job submitted, in order
+  double seconds = 0.0;  // wall time from submission to the end
 
-  bool succeeded() const { return finishSucceeded; }
   std::vector<const TaskOutcome*> failedTasks() const;
 };
 

@@ -20,19 +20,10 @@ constexpr double kNoTimeLimit = 1e9;
 // Fills `task` from how its script ended.
 void judge(TaskOutcome& task, const ChildOutcome& child, double timeLimit) {
   task.succeeded = child.succeeded();
-  if (task.succeeded) {
-    task.state = "COMPLETED";
-    task.reason.clear();
-  } else if (child.timedOut) {
-    task.state = "TIMEOUT";
-    task.reason = child.describe(timeLimit);
-  } else if (child.signal != 0) {
-    task.state = "FAILED";
-    task.reason = child.describe(timeLimit);
-  } else {
-    task.state = child.started ? "FAILED" : "NOT_STARTED";
-    task.reason = child.started ? describeExitStatus(child.exitCode) : child.describe(timeLimit);
-  }
+  task.reason.clear();
+  if (task.succeeded) return;
+  const bool exited = child.started && !child.timedOut && child.signal == 0;
+  task.reason = exited ? describeExitStatus(child.exitCode) : child.describe(timeLimit);
 }
 
 }  // namespace
@@ -52,8 +43,8 @@ JobOutcome runLocally(const ClusterJob& job, const SchedulerOptions& options) {
   for (int attempt = 0; attempt <= options.retries && !pending.empty(); ++attempt) {
     if (attempt > 0)
       progressLine(options, "running " + std::to_string(pending.size()) + " failed task(s) again");
-    const int workers = std::max(
-        1, std::min<int>(options.workers > 0 ? options.workers : cores, int(pending.size())));
+    const int perCore = options.workers > 0 ? options.workers : cores / options.cpusPerTask;
+    const int workers = std::max(1, std::min<int>(perCore, int(pending.size())));
     std::atomic<size_t> next{0};
     std::mutex report;
     size_t done = 0;
@@ -62,10 +53,16 @@ JobOutcome runLocally(const ClusterJob& job, const SchedulerOptions& options) {
         TaskOutcome& task = outcome.tasks[pending[k]];
         task.log = taskLogPath(job, std::to_string(task.index), attempt);
         ++task.attempts;
-        const ChildOutcome child = runChild(
-            {"env", "SLURM_ARRAY_TASK_ID=" + std::to_string(task.index), "/bin/sh", script},
-            timeLimit, task.log);
-        judge(task, child, timeLimit);
+        try {
+          judge(task,
+                runChild(
+                    {"env", "SLURM_ARRAY_TASK_ID=" + std::to_string(task.index), "/bin/sh", script},
+                    timeLimit, task.log),
+                timeLimit);
+        } catch (const std::exception& error) {  // e.g. its log cannot be written
+          task.succeeded = false;
+          task.reason = std::string("could not be started: ") + error.what();
+        }
         const std::lock_guard<std::mutex> lock(report);
         ++done;
         if (!task.succeeded) task.failures.push_back(task.reason + " (log " + task.log + ")");

@@ -26,6 +26,9 @@ const std::set<std::string> kPerRunKeys = {"pathway:spp",
                                            "pathway:todos",
                                            "pathway:todoSites",
                                            "pathway:mergedParts"};
+// Not compared: the same scene file may be named by another path on another machine (its
+// content's hash, pathway:sceneHash, is compared).
+const std::set<std::string> kNotCompared = {"pathway:scene"};
 const char* const kSummedCounters[] = {"pathway:primaryRays", "pathway:secondaryRays",
                                        "pathway:shadowRays", "pathway:samples",
                                        "pathway:invalidSamples"};
@@ -46,7 +49,8 @@ std::string settingMismatch(const std::map<std::string, std::string>& first,
   for (const auto& entry : first) keys.insert(entry.first);
   for (const auto& entry : part) keys.insert(entry.first);
   for (const std::string& key : keys) {
-    if (key.rfind("pathway:", 0) != 0 || kPerRunKeys.count(key)) continue;
+    if (key.rfind("pathway:", 0) != 0 || kPerRunKeys.count(key) || kNotCompared.count(key))
+      continue;
     const auto a = first.find(key), b = part.find(key);
     const std::string here = a != first.end() ? a->second : "(none)";
     const std::string there = b != part.end() ? b->second : "(none)";
@@ -64,17 +68,18 @@ MergedRender mergeParts(const std::vector<std::string>& paths, bool allowIncompl
     std::string path;
     PartialFilm part;
   };
+  // First every header (quick), so a bad part is refused before any sums are read; then the
+  // sums one part at a time, so memory holds two films whatever the number of parts.
   std::vector<Loaded> parts;
-  for (const std::string& path : paths) parts.push_back({path, readPartialFilm(path)});
+  for (const std::string& path : paths) parts.push_back({path, readPartialFilm(path, false)});
 
   const Loaded& first = parts.front();
   for (const Loaded& p : parts) {
-    if (p.part.film.width() != first.part.film.width() ||
-        p.part.film.height() != first.part.film.height())
-      throw PathwayError(p.path + ": " + std::to_string(p.part.film.width()) + "x" +
-                         std::to_string(p.part.film.height()) + " pixels, but " + first.path +
-                         " has " + std::to_string(first.part.film.width()) + "x" +
-                         std::to_string(first.part.film.height()));
+    if (p.part.width != first.part.width || p.part.height != first.part.height)
+      throw PathwayError(p.path + ": " + std::to_string(p.part.width) + "x" +
+                         std::to_string(p.part.height) + " pixels, but " + first.path + " has " +
+                         std::to_string(first.part.width) + "x" +
+                         std::to_string(first.part.height));
     if (p.part.whole != first.part.whole)
       throw PathwayError(p.path + ": a part of a render of " + std::to_string(p.part.whole) +
                          " spp, but " + first.path + " is a part of one of " +
@@ -110,8 +115,13 @@ MergedRender mergeParts(const std::vector<std::string>& paths, bool allowIncompl
         (merged.begin != 0 ? range(0, merged.begin) : range(merged.end, merged.whole)) +
         " are missing (or merge with --allow-incomplete)");
 
-  merged.film = Film(first.part.film.width(), first.part.film.height());
-  for (const Loaded& p : parts) merged.film += p.part.film;
+  merged.film = Film(first.part.width, first.part.height);
+  for (const Loaded& p : parts) {
+    const PartialFilm part = readPartialFilm(p.path);
+    if (part.width != first.part.width || part.height != first.part.height)
+      throw PathwayError(p.path + ": changed while it was being merged");
+    merged.film += part.film;
+  }
   merged.film.developAll(merged.images.color, merged.images.variance, merged.images.weight,
                          &merged.unresolvedPixels);
 

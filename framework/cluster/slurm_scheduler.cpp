@@ -3,7 +3,6 @@
 // followed by asking the controller (scontrol) every `pollSeconds`: `sbatch --wait` polls at 2,
 // 8, then 32 s, far too coarse for jobs of seconds. Failed tasks go in again as a new array with a
 // new dependent job.
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -41,20 +40,27 @@ std::string slurmTime(double seconds) {
          std::to_string(total % 60);
 }
 
+// What every sbatch gets. --no-requeue: a task that fails is retried by us, in a new array, never
+// also by Slurm (two runs would write the same part).
 std::vector<std::string> commonArguments(const ClusterJob& job, const SchedulerOptions& options) {
-  std::vector<std::string> arguments = {"sbatch", "--parsable", "--chdir=" + job.folder};
+  std::vector<std::string> arguments = {"sbatch", "--parsable", "--no-requeue",
+                                        "--chdir=" + job.folder};
   if (!options.partition.empty()) arguments.push_back("--partition=" + options.partition);
   if (!options.account.empty()) arguments.push_back("--account=" + options.account);
-  if (options.taskTimeLimit > 0) arguments.push_back("--time=" + slurmTime(options.taskTimeLimit));
   for (const std::string& extra : options.sbatchArguments) arguments.push_back(extra);
   return arguments;
 }
 
-// The job id sbatch --parsable prints ("123" or "123;cluster").
+// The job id sbatch --parsable prints ("123" or "123;cluster"), on a line of its own after any
+// warnings (its output and errors arrive together).
 std::string jobId(const std::string& output) {
-  const std::string id = output.substr(0, output.find_first_of(";\n"));
-  if (id.empty() || id.find_first_not_of("0123456789") != std::string::npos)
-    throw PathwayError("sbatch printed no job id: " + output);
+  std::istringstream lines(output);
+  std::string id;
+  for (std::string line; std::getline(lines, line);) {
+    line = line.substr(0, line.find(';'));
+    if (!line.empty() && line.find_first_not_of("0123456789") == std::string::npos) id = line;
+  }
+  if (id.empty()) throw PathwayError("sbatch printed no job id: " + output);
   return id;
 }
 
@@ -64,6 +70,7 @@ std::string submitArray(const ClusterJob& job, const SchedulerOptions& options,
   for (int index : indices) list += (list.empty() ? "" : ",") + std::to_string(index);
   if (options.maxRunning > 0) list += "%" + std::to_string(options.maxRunning);
   std::vector<std::string> arguments = commonArguments(job, options);
+  if (options.taskTimeLimit > 0) arguments.push_back("--time=" + slurmTime(options.taskTimeLimit));
   arguments.insert(arguments.end(),
                    {"--array=" + list, "--job-name=" + job.name,
                     "--cpus-per-task=" + std::to_string(options.cpusPerTask),
@@ -84,9 +91,17 @@ std::string submitFinish(const ClusterJob& job, const SchedulerOptions& options,
 // One record of `scontrol -o show job`: its Key=Value words.
 using Record = std::map<std::string, std::string>;
 
+// The job's records; none once the controller has forgotten it (MinJobAge after it ended).
 std::vector<Record> showJob(const ClusterJob& job, const std::string& id) {
   std::vector<Record> records;
-  std::istringstream lines(slurmCommand(job, {"scontrol", "-o", "show", "job", id}));
+  const ChildOutcome child = runChild({"scontrol", "-o", "show", "job", id}, kCommandTimeLimit,
+                                      job.folder + "/logs/.slurm-command.out");
+  if (!child.succeeded()) {
+    if (child.output.find("Invalid job id") != std::string::npos) return records;
+    throw PathwayError("scontrol show job " + id + ": " + child.describe(kCommandTimeLimit) + ": " +
+                       child.output);
+  }
+  std::istringstream lines(child.output);
   for (std::string line; std::getline(lines, line);) {
     Record record;
     std::istringstream words(line);
@@ -100,9 +115,10 @@ std::vector<Record> showJob(const ClusterJob& job, const std::string& id) {
 }
 
 bool isFinal(const std::string& state) {
-  static const std::set<std::string> running = {"PENDING",    "CONFIGURING", "RUNNING",
-                                                "COMPLETING", "SUSPENDED",   "REQUEUED",
-                                                "RESIZING",   "SIGNALING",   "STAGE_OUT"};
+  static const std::set<std::string> running = {
+      "PENDING",      "CONFIGURING", "RUNNING",      "COMPLETING", "SUSPENDED",
+      "REQUEUED",     "RESIZING",    "SIGNALING",    "STAGE_OUT",  "STOPPED",
+      "REQUEUE_HOLD", "REQUEUE_FED", "RESV_DEL_HOLD"};
   return !running.count(state);
 }
 
@@ -140,6 +156,8 @@ Record follow(const ClusterJob& job, const SchedulerOptions& options, const std:
         continue;
       }
       const int index = std::atoi(tasks.c_str());
+      if (index < 0 || index >= int(outcome.tasks.size()))
+        throw PathwayError("job " + arrayId + " has a task " + tasks + " it was not given");
       TaskOutcome& task = outcome.tasks[index];
       if (!isFinal(state)) {
         ++counts[state == "PENDING" ? "waiting" : "running"];
@@ -149,7 +167,6 @@ Record follow(const ClusterJob& job, const SchedulerOptions& options, const std:
       ++counts[state == "COMPLETED" ? "done" : "failed"];
       if (reported.insert(index).second) {
         ++task.attempts;
-        task.state = state;
         task.succeeded = state == "COMPLETED";
         task.log = taskLogPath(job, std::to_string(index), attempt);
         if (!task.succeeded) {
@@ -171,6 +188,8 @@ Record follow(const ClusterJob& job, const SchedulerOptions& options, const std:
     if (over && reported.size() == indices.size()) {
       const std::vector<Record> finish = showJob(job, finishId);
       if (!finish.empty() && isFinal(finish.front().at("JobState"))) return finish.front();
+      // Forgotten by the controller: cancelled long ago when a task failed.
+      if (finish.empty()) return {{"JobState", counts["failed"] > 0 ? "CANCELLED" : "UNKNOWN"}};
     }
     std::this_thread::sleep_for(std::chrono::duration<double>(options.pollSeconds));
   }
@@ -194,9 +213,14 @@ JobOutcome runOnSlurm(const ClusterJob& job, const SchedulerOptions& options) {
   }
   for (int attempt = 0; attempt <= options.retries && !pending.empty(); ++attempt) {
     const std::string arrayId = submitArray(job, options, pending, attempt);
-    const std::string finishId = submitFinish(job, options, arrayId);
-    outcome.jobIds.push_back(arrayId);
-    outcome.jobIds.push_back(finishId);
+    std::string finishId;
+    try {
+      finishId = submitFinish(job, options, arrayId);
+    } catch (const PathwayError&) {
+      // No task may run without its last step: take the array back.
+      runChild({"scancel", arrayId}, kCommandTimeLimit, job.folder + "/logs/.slurm-command.out");
+      throw;
+    }
     progressLine(options, "submitted array job " + arrayId + " (" + std::to_string(pending.size()) +
                               " task(s)) and job " + finishId + " after it (afterok); logs in " +
                               job.folder + "/logs");

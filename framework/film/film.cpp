@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/error.h"
+
 namespace pathway {
 namespace {
 
@@ -57,6 +59,8 @@ void Film::merge(FilmBlock& block) {
 }
 
 Film& Film::operator+=(const Film& other) {
+  if (other.width_ != width_ || other.height_ != height_)
+    throw PathwayError("internal: adding films of different sizes");
   for (size_t i = 0; i < sums_.size(); ++i) sums_[i] += other.sums_[i];
   return *this;
 }

@@ -212,7 +212,7 @@ std::vector<std::string> submissionFolders(const std::string& submissions) {
   return folders;
 }
 
-std::vector<SubmissionResult> classTableFromResults(const ClassGrading& grading) {
+std::vector<SubmissionResult> readClassResults(const ClassGrading& grading) {
   std::vector<SubmissionResult> rows;
   for (const std::string& folder : submissionFolders(grading.submissions)) {
     const std::string name = submissionName(folder);
@@ -225,6 +225,11 @@ std::vector<SubmissionResult> classTableFromResults(const ClassGrading& grading)
     }
     rows.push_back(row);
   }
+  return rows;
+}
+
+std::vector<SubmissionResult> classTableFromResults(const ClassGrading& grading) {
+  const std::vector<SubmissionResult> rows = readClassResults(grading);
   fs::create_directories(grading.output);
   writeClassTable(grading, rows);
   return rows;

@@ -33,6 +33,8 @@ std::vector<SubmissionResult> gradeClass(const ClassGrading& grading,
 // The class table from results already in `grading.output` (graded one submission at a time,
 // e.g. by the tasks of a cluster job): a submission without results gets a row that says so.
 std::vector<SubmissionResult> classTableFromResults(const ClassGrading& grading);
+// The same rows, read only.
+std::vector<SubmissionResult> readClassResults(const ClassGrading& grading);
 
 // The submission folders in `submissions`, sorted; throws PathwayError when there are none.
 std::vector<std::string> submissionFolders(const std::string& submissions);

@@ -43,7 +43,7 @@ constexpr size_t kSumCount = sizeof kSumFields / sizeof kSumFields[0];
 constexpr size_t kWordsPerPixel = 2 * kSumCount + 1;
 const char* const kImageChannels[] = {"R",          "G",          "B",     "variance.R",
                                       "variance.G", "variance.B", "weight"};
-constexpr size_t kImageChannelCount = 7;
+constexpr size_t kImageChannelCount = sizeof kImageChannels / sizeof kImageChannels[0];
 
 std::vector<std::string> wordChannels() {
   std::vector<std::string> names;
@@ -63,16 +63,17 @@ void insertSlices(Imf::FrameBuffer& frame, const std::vector<std::string>& names
     frame.insert(names[c], Imf::Slice(type, base + c * valueSize, stride, stride * width));
 }
 
-bool parseRange(const std::string& text, uint32_t& begin, uint32_t& end) {
-  unsigned long a = 0, b = 0;
+}  // namespace
+
+bool parseSampleRange(const std::string& text, uint32_t& begin, uint32_t& end) {
+  unsigned long long a = 0, b = 0;
   char extra = 0;
-  if (std::sscanf(text.c_str(), "%lu:%lu%c", &a, &b, &extra) != 2) return false;
+  if (std::sscanf(text.c_str(), "%llu:%llu%c", &a, &b, &extra) != 2 || a >= b || b > 0xffffffffu)
+    return false;
   begin = static_cast<uint32_t>(a);
   end = static_cast<uint32_t>(b);
-  return begin < end;
+  return true;
 }
-
-}  // namespace
 
 void writePartialFilm(const std::string& path, const Film& film, const FilmImages& images,
                       const ImageMetadata& metadata) {
@@ -124,7 +125,7 @@ void writePartialFilm(const std::string& path, const Film& film, const FilmImage
   });
 }
 
-PartialFilm readPartialFilm(const std::string& path) {
+PartialFilm readPartialFilm(const std::string& path, bool withSums) {
   PartialFilm part;
   try {
     Imf::InputFile file(path.c_str());
@@ -143,7 +144,7 @@ PartialFilm readPartialFilm(const std::string& path) {
     const auto range = part.metadata.find(kSampleRangeKey);
     const auto whole = part.metadata.find(kSampleRangeOfKey);
     if (range == part.metadata.end() || whole == part.metadata.end() ||
-        !parseRange(range->second, part.begin, part.end))
+        !parseSampleRange(range->second, part.begin, part.end))
       throw PathwayError(path + ": its sample range is missing or malformed");
     part.whole = static_cast<uint32_t>(std::strtoul(whole->second.c_str(), nullptr, 10));
     if (part.end > part.whole)
@@ -151,8 +152,9 @@ PartialFilm readPartialFilm(const std::string& path) {
                          whole->second + " samples");
 
     const Imath::Box2i window = exr.dataWindow();
-    const int width = window.max.x - window.min.x + 1;
-    const int height = window.max.y - window.min.y + 1;
+    const int width = part.width = window.max.x - window.min.x + 1;
+    const int height = part.height = window.max.y - window.min.y + 1;
+    if (!withSums) return part;
     std::vector<uint32_t> words(static_cast<size_t>(width) * height * kWordsPerPixel);
     Imf::FrameBuffer frame;
     // Addressed in data-window coordinates: shift the base to the window's first pixel.

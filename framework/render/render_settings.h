@@ -78,7 +78,6 @@ struct RenderSettings {
   uint32_t firstSample() const { return sampleBegin; }
   uint32_t endSample() const { return sampleEnd == 0 ? samplesPerPixel : sampleEnd; }
   uint32_t samplesToRender() const { return endSample() - firstSample(); }
-  bool isPartial() const { return firstSample() != 0 || endSample() != samplesPerPixel; }
 
   // The filter's support in pixels, with 0 decoded to the filter's natural radius.
   float filterRadiusPixels() const {
