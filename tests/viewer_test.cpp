@@ -22,6 +22,7 @@
 #include "viewer/loaded_scene.h"
 #include "viewer/panel.h"
 #include "viewer/render_worker.h"
+#include "viewer/viewer_demos.h"
 #include "viewer/viewer_state.h"
 
 namespace pathway {
@@ -330,6 +331,67 @@ TEST_F(ViewerCli, WindowScreenshotUnderXvfb) {
   ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
   ASSERT_TRUE(fs::exists(path("window.png"))) << outcome.output;
   expectViewerPixels(path("window.png"), 960, 540);
+}
+
+// Every lecture demo names a scene that exists and integrators, parameters and settings that
+// `pathway render` would accept, for both panes.
+TEST(ViewerDemos, EveryDemoIsAValidStartingPoint) {
+  if (!registered("stage5@ref")) GTEST_SKIP() << "the demos show the reference stages";
+  for (const ViewerDemo& demo : viewerDemos()) {
+    ViewerOptions options;
+    applyViewerDemo(demo.name, options);
+    EXPECT_TRUE(fs::is_regular_file(options.choices.scene)) << demo.name;
+    EXPECT_NO_THROW(options.choices.recipe()) << demo.name;
+    if (!demo.splitIntegrator.empty()) {
+      RenderChoices right = options.choices;
+      right.integrator = options.splitIntegrator;
+      right.params = options.splitParams;
+      EXPECT_NO_THROW(right.recipe()) << demo.name;
+    }
+    EXPECT_FALSE(demo.shows.empty()) << demo.name;
+  }
+  ViewerOptions options;
+  try {
+    applyViewerDemo("no-such-demo", options);
+    ADD_FAILURE() << "an unknown demo was accepted";
+  } catch (const PathwayError& error) {
+    EXPECT_NE(std::string(error.what()).find("nested-vs-4d"), std::string::npos) << error.what();
+  }
+}
+
+// A demo starts straight into its split view: both panes show an AO render of the Cornell box
+// (not flat), and the error plot's reference is made (small here, to keep the test short).
+TEST_F(ViewerCli, ADemoStartsIntoItsSplitView) {
+  if (!registered("stage3@ref")) GTEST_SKIP() << "the demo shows the reference stages";
+  const Outcome outcome = run("env ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 " +
+                              std::string(PATHWAY_BINARY) +
+                              " view --demo nested-vs-4d --reference-spp 16 --headless --frames 10 "
+                              "--window-width 960 --window-height 540 --screenshot " +
+                              path("demo.png"));
+  ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+  const Image image = readImageFile(path("demo.png")).images.color;
+  EXPECT_NE(outcome.output.find("error plot, left stage2@ref"), std::string::npos)
+      << outcome.output;
+  EXPECT_NE(outcome.output.find("error plot, right stage3@ref"), std::string::npos)
+      << outcome.output;
+  // Each half of the render region (right of the panel) shows a render, not a flat colour.
+  const int panel = static_cast<int>(kPanelWidth), half = (image.width - panel) / 2;
+  for (int pane = 0; pane < 2; ++pane) {
+    double sum = 0.0, sumSquares = 0.0;
+    size_t count = 0;
+    for (int y = 150; y < image.height - 10; ++y)
+      for (int x = panel + pane * half + 5; x < panel + (pane + 1) * half - 5; ++x, ++count) {
+        const double luminance = image.at(x, y).x;
+        sum += luminance;
+        sumSquares += luminance * luminance;
+      }
+    const double mean = sum / count;
+    EXPECT_GT(std::sqrt(sumSquares / count - mean * mean), 0.1) << "pane " << pane << " is flat";
+    EXPECT_GT(mean, 0.2) << "pane " << pane << " is dark";
+  }
+  const Outcome unknown = run(std::string(PATHWAY_BINARY) + " view --demo nope --headless");
+  EXPECT_EQ(unknown.exitCode, 1);
+  EXPECT_NE(unknown.output.find("unknown demo 'nope'"), std::string::npos) << unknown.output;
 }
 
 TEST_F(ViewerCli, WithoutADisplaySaysToUseHeadless) {

@@ -1,16 +1,20 @@
 // `pathway view [scene] [options]`: the interactive viewer (framework/viewer/), or the same viewer
 // drawn offscreen with --headless for screenshots and benchmarks. Built only with the viewer.
 #ifdef PATHWAY_HAS_VIEWER
+#include <cstdio>
 #include <memory>
 
 #include "app/commands.h"
 #include "app/shared_options.h"
 #include "viewer/viewer_app.h"
+#include "viewer/viewer_demos.h"
 
 namespace pathway {
 
 Command addViewCommand(CLI::App& app) {
   auto options = std::make_shared<ViewerOptions>();
+  auto demo = std::make_shared<std::string>();
+  auto listDemos = std::make_shared<bool>(false);
   options->choices.scene = PATHWAY_DEFAULT_SCENE;
   CLI::App* view = app.add_subcommand("view", "Open the interactive viewer");
   view->footer(
@@ -22,6 +26,7 @@ Command addViewCommand(CLI::App& app) {
       "  pathway view --headless --frames 60 --screenshot ui.png   (no display needed)\n"
       "  pathway view -i stage5@ref --width 512 --height 512 --reference ref.exr   error plot\n"
       "  pathway view --benchmark                        progressive fps, time to first image\n"
+      "  pathway view --demo nested-vs-4d                a lecture demo (--list-demos)\n"
       "Press H in the viewer for the keys and mouse.");
   addSharedOptions(*view, options->choices);
   view->add_option("--split", options->splitIntegrator,
@@ -69,7 +74,20 @@ Command addViewCommand(CLI::App& app) {
                    "How long each benchmark measurement runs")
       ->check(CLI::Range(0.2, 600.0))
       ->capture_default_str();
-  return {view, [options] { return runViewer(*options); }};
+  view->add_option("--demo", *demo,
+                   "Start a lecture demo by name: its scene, integrators, split view, balance and "
+                   "display (see --list-demos)");
+  view->add_flag("--list-demos", *listDemos, "List the lecture demos, then exit");
+  return {view, [options, demo, listDemos] {
+            if (*listDemos) {
+              for (const ViewerDemo& d : viewerDemos())
+                std::printf("%-16s %s\n%16s pathway view %s\n", d.name.c_str(), d.shows.c_str(), "",
+                            describeViewerDemo(d).c_str());
+              return 0;
+            }
+            if (!demo->empty()) applyViewerDemo(*demo, *options);
+            return runViewer(*options);
+          }};
 }
 
 }  // namespace pathway

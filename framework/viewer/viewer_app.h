@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include "render/render_choices.h"
 #include "viewer/error_plot.h"
 #include "viewer/frame_grade.h"
 #include "viewer/gl_display.h"
@@ -19,32 +18,10 @@
 #include "viewer/reference_image.h"
 #include "viewer/reference_maker.h"
 #include "viewer/render_worker.h"
+#include "viewer/viewer_options.h"
 #include "viewer/viewer_state.h"
 
 namespace pathway {
-
-struct ViewerOptions {
-  RenderChoices choices;        // scene, integrator, parameters, sampler, seed, filter
-  std::string splitIntegrator;  // non-empty: split view with this on the right
-  std::vector<std::string> splitParams;
-  std::string balance = "time";  // split view: "time" or "rays"
-  int windowWidth = 1280, windowHeight = 720;
-  int width = 0, height = 0;  // render size; 0: follow the pane
-  uint32_t spp = setting::kViewerSamplesPerPixel.defaultValue;
-  uint32_t samplesPerPass = setting::kSamplesPerPass.defaultValue;
-  float exposure = setting::kExposure.defaultValue;
-  std::string display = "color";
-  bool showHelp = false;  // open with the keys-and-mouse overlay
-  bool headless = false;
-  int frames = 0;          // > 0: draw this many frames, then exit
-  std::string screenshot;  // written after the last frame
-  bool grade = false;      // headless: grade the left pane once its first image is in (key G)
-  std::string reference;   // an EXR the error plot measures the panes against
-  uint32_t referenceSpp = setting::kReferenceSamplesPerPixel.defaultValue;
-  bool makeReference = false;  // headless: make the reference once the first image is in (key M)
-  bool benchmark = false;
-  double benchmarkSeconds = 3.0;
-};
 
 // The state the options describe; throws PathwayError on unknown names or bad parameters.
 ViewerState initialState(const ViewerOptions& options);

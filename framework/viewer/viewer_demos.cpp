@@ -1,0 +1,117 @@
+#include "viewer/viewer_demos.h"
+
+#include "core/error.h"
+
+namespace pathway {
+
+const std::vector<ViewerDemo>& viewerDemos() {
+  static const std::vector<ViewerDemo> demos = {
+      {"nested-vs-4d",
+       "AO as two nested integrals (4 AO rays per eye ray) beside one 4D integral, at equal rays, "
+       "with their error plots",
+       "cornell_box.gltf",
+       "stage2@ref",
+       {"ao-rays=4"},
+       "stage3@ref",
+       {},
+       "rays",
+       "sobol",
+       "color",
+       true,
+       "",
+       0},
+      {"naive-vs-path",
+       "naive recursion (3 rays per hit, depth 2) beside path tracing, at equal time",
+       "cornell_box.gltf",
+       "stage4@ref",
+       {"branching=3", "depth=2"},
+       "stage5@ref",
+       {"max-depth=3"},
+       "time",
+       "",
+       "color",
+       true,
+       "",
+       0},
+      {"nee-small-light",
+       "path tracing without and with next-event estimation under a small light, at equal rays",
+       "small_light.gltf",
+       "stage5@ref",
+       {"nee=off"},
+       "stage5@ref",
+       {"nee=on"},
+       "rays",
+       "",
+       "color",
+       true,
+       "",
+       0},
+      {"ray-explosion",
+       "rays per camera sample of naive recursion (4 rays per hit, depth 3) as a heatmap",
+       "cornell_box.gltf",
+       "stage4@ref",
+       {"branching=4", "depth=3"},
+       "",
+       {},
+       "time",
+       "",
+       "rays",
+       false,
+       "",
+       0},
+      {"mitchell-lobes",
+       "the Mitchell-Netravali filter at 2 samples per pixel: sharp edges, negative lobes, and "
+       "numerical normalisation keeping flat regions flat",
+       "grading_edges.gltf",
+       "stage1@ref",
+       {},
+       "",
+       {},
+       "time",
+       "",
+       "color",
+       false,
+       "mitchell",
+       2},
+  };
+  return demos;
+}
+
+void applyViewerDemo(const std::string& name, ViewerOptions& options) {
+  for (const ViewerDemo& demo : viewerDemos()) {
+    if (demo.name != name) continue;
+    options.choices.scene = std::string(PATHWAY_SOURCE_DIR) + "/scenes/" + demo.scene;
+    options.choices.integrator = demo.integrator;
+    options.choices.params = demo.params;
+    options.choices.sampler = demo.sampler;
+    options.splitIntegrator = demo.splitIntegrator;
+    options.splitParams = demo.splitParams;
+    options.balance = demo.balance;
+    options.display = demo.display;
+    options.makeReference = options.makeReference || demo.makeReference;
+    if (!demo.filter.empty()) options.choices.filter = demo.filter;
+    if (demo.spp > 0) options.spp = demo.spp;
+    return;
+  }
+  std::string known;
+  for (const ViewerDemo& demo : viewerDemos()) known += (known.empty() ? "" : ", ") + demo.name;
+  throw PathwayError("unknown demo '" + name + "' (known: " + known + ")");
+}
+
+std::string describeViewerDemo(const ViewerDemo& demo) {
+  std::string line = "scenes/" + demo.scene + " -i " + demo.integrator;
+  for (const std::string& param : demo.params) line += " -p " + param;
+  if (!demo.sampler.empty()) line += " --sampler " + demo.sampler;
+  if (!demo.splitIntegrator.empty()) {
+    line += " --split " + demo.splitIntegrator;
+    for (const std::string& param : demo.splitParams) line += " --split-param " + param;
+    line += " --balance " + demo.balance;
+  }
+  if (demo.display != "color") line += " --display " + demo.display;
+  if (!demo.filter.empty()) line += " --filter " + demo.filter;
+  if (demo.spp > 0) line += " --spp " + std::to_string(demo.spp);
+  if (demo.makeReference) line += " --make-reference";
+  return line;
+}
+
+}  // namespace pathway

@@ -1,0 +1,40 @@
+// The lecture's live demos, by name: `pathway view --demo nested-vs-4d` starts the viewer with the
+// scene, integrators, split view, balance and display a demo needs, so a lecturer never types
+// settings in class. Each demo is declared once here; `pathway view --list-demos`, the slides and
+// the tests read this table.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "viewer/viewer_options.h"
+
+namespace pathway {
+
+struct ViewerDemo {
+  std::string name;
+  std::string shows;  // one line: what the demo is there to show
+  std::string scene;  // relative to the scenes folder
+  std::string integrator;
+  std::vector<std::string> params;  // name=value
+  std::string splitIntegrator;      // empty: one pane
+  std::vector<std::string> splitParams;
+  std::string balance = "time";  // split view: time or rays
+  std::string sampler;           // empty: the left integrator's own
+  std::string display = "color";
+  bool makeReference = false;  // make the error plot's reference once the first image is in
+  std::string filter;          // empty: box
+  uint32_t spp = 0;            // the spp target; 0: the viewer's default
+};
+
+const std::vector<ViewerDemo>& viewerDemos();
+
+// Sets what the demo `name` decides in `options` (the rest, window and headless options among
+// them, stays as given). Throws PathwayError naming the known demos for an unknown name.
+void applyViewerDemo(const std::string& name, ViewerOptions& options);
+
+// The options the demo stands for, as they would be typed after `pathway view`.
+std::string describeViewerDemo(const ViewerDemo& demo);
+
+}  // namespace pathway

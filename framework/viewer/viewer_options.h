@@ -1,0 +1,36 @@
+// What `pathway view` is asked for on its command line (or by a lecture demo, viewer_demos.h),
+// before it is checked into a ViewerState. GL-free, so the tests and the demos can use it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "render/render_choices.h"
+
+namespace pathway {
+
+struct ViewerOptions {
+  RenderChoices choices;        // scene, integrator, parameters, sampler, seed, filter
+  std::string splitIntegrator;  // non-empty: split view with this on the right
+  std::vector<std::string> splitParams;
+  std::string balance = "time";  // split view: "time" or "rays"
+  int windowWidth = 1280, windowHeight = 720;
+  int width = 0, height = 0;  // render size; 0: follow the pane
+  uint32_t spp = setting::kViewerSamplesPerPixel.defaultValue;
+  uint32_t samplesPerPass = setting::kSamplesPerPass.defaultValue;
+  float exposure = setting::kExposure.defaultValue;
+  std::string display = "color";
+  bool showHelp = false;  // open with the keys-and-mouse overlay
+  bool headless = false;
+  int frames = 0;          // > 0: draw this many frames, then exit
+  std::string screenshot;  // written after the last frame
+  bool grade = false;      // headless: grade the left pane once its first image is in (key G)
+  std::string reference;   // an EXR the error plot measures the panes against
+  uint32_t referenceSpp = setting::kReferenceSamplesPerPixel.defaultValue;
+  bool makeReference = false;  // headless: make the reference once the first image is in (key M)
+  bool benchmark = false;
+  double benchmarkSeconds = 3.0;
+};
+
+}  // namespace pathway
