@@ -54,6 +54,23 @@ std::vector<const TaskOutcome*> JobOutcome::failedTasks() const {
   return failed;
 }
 
+std::vector<int> startOutcome(const ClusterJob& job, JobOutcome& outcome) {
+  outcome.tasks.resize(job.tasks.size());
+  std::vector<int> all;
+  for (size_t i = 0; i < job.tasks.size(); ++i) {
+    outcome.tasks[i].index = static_cast<int>(i);
+    all.push_back(static_cast<int>(i));
+  }
+  return all;
+}
+
+std::vector<int> stillFailing(const JobOutcome& outcome, const std::vector<int>& ran) {
+  std::vector<int> failed;
+  for (int index : ran)
+    if (!outcome.tasks[index].succeeded) failed.push_back(index);
+  return failed;
+}
+
 std::string shellQuote(const std::string& text) {
   if (!text.empty() && text.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
                                               "0123456789@%+=:,./-_") == std::string::npos)

@@ -33,12 +33,7 @@ JobOutcome runLocally(const ClusterJob& job, const SchedulerOptions& options) {
   const double timeLimit = options.taskTimeLimit > 0 ? options.taskTimeLimit : kNoTimeLimit;
   const int cores = tbb::info::default_concurrency();
   JobOutcome outcome;
-  outcome.tasks.resize(job.tasks.size());
-  std::vector<int> pending;
-  for (size_t i = 0; i < job.tasks.size(); ++i) {
-    outcome.tasks[i].index = static_cast<int>(i);
-    pending.push_back(static_cast<int>(i));
-  }
+  std::vector<int> pending = startOutcome(job, outcome);
   const std::string script = job.folder + "/task.sh";
   for (int attempt = 0; attempt <= options.retries && !pending.empty(); ++attempt) {
     if (attempt > 0)
@@ -75,10 +70,7 @@ JobOutcome runLocally(const ClusterJob& job, const SchedulerOptions& options) {
     std::vector<std::thread> threads;
     for (int w = 0; w < workers; ++w) threads.emplace_back(work);
     for (std::thread& thread : threads) thread.join();
-    std::vector<int> failed;
-    for (int index : pending)
-      if (!outcome.tasks[index].succeeded) failed.push_back(index);
-    pending = failed;
+    pending = stillFailing(outcome, pending);
   }
   if (pending.empty()) {
     outcome.finishRan = true;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "cluster/cluster_job.h"
 
@@ -10,6 +11,11 @@ namespace pathway {
 
 JobOutcome runLocally(const ClusterJob& job, const SchedulerOptions& options);
 JobOutcome runOnSlurm(const ClusterJob& job, const SchedulerOptions& options);
+
+// Fills `outcome` with one entry per task of `job`; returns every task's index (all to run).
+std::vector<int> startOutcome(const ClusterJob& job, JobOutcome& outcome);
+// The tasks of `ran` that did not succeed (to run again).
+std::vector<int> stillFailing(const JobOutcome& outcome, const std::vector<int>& ran);
 
 // Where task `index`'s log goes on its first attempt (0) and on retry `attempt` (1, 2, ...);
 // `index` "%a" gives sbatch's pattern for every task of an array.

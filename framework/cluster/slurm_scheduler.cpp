@@ -205,12 +205,7 @@ JobOutcome runOnSlurm(const ClusterJob& job, const SchedulerOptions& options) {
         "use --scheduler local)");
   const auto start = std::chrono::steady_clock::now();
   JobOutcome outcome;
-  outcome.tasks.resize(job.tasks.size());
-  std::vector<int> pending;
-  for (size_t i = 0; i < job.tasks.size(); ++i) {
-    outcome.tasks[i].index = static_cast<int>(i);
-    pending.push_back(static_cast<int>(i));
-  }
+  std::vector<int> pending = startOutcome(job, outcome);
   for (int attempt = 0; attempt <= options.retries && !pending.empty(); ++attempt) {
     const std::string arrayId = submitArray(job, options, pending, attempt);
     std::string finishId;
@@ -225,10 +220,7 @@ JobOutcome runOnSlurm(const ClusterJob& job, const SchedulerOptions& options) {
                               " task(s)) and job " + finishId + " after it (afterok); logs in " +
                               job.folder + "/logs");
     const Record finish = follow(job, options, arrayId, finishId, pending, attempt, outcome);
-    std::vector<int> failed;
-    for (int index : pending)
-      if (!outcome.tasks[index].succeeded) failed.push_back(index);
-    pending = failed;
+    pending = stillFailing(outcome, pending);
     if (pending.empty()) {
       outcome.finishRan = true;
       outcome.finishLog = job.folder + "/logs/finish.log";

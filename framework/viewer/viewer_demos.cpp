@@ -1,79 +1,70 @@
 #include "viewer/viewer_demos.h"
 
+#include <utility>
+
 #include "core/error.h"
 
 namespace pathway {
 
-const std::vector<ViewerDemo>& viewerDemos() {
-  static const std::vector<ViewerDemo> demos = {
-      {"nested-vs-4d",
-       "AO as two nested integrals (4 AO rays per eye ray) beside one 4D integral, at equal rays, "
-       "with their error plots",
-       "cornell_box.gltf",
-       "stage2@ref",
-       {"ao-rays=4"},
-       "stage3@ref",
-       {},
-       "rays",
-       "sobol",
-       "color",
-       true,
-       "",
-       0},
-      {"naive-vs-path",
-       "naive recursion (3 rays per hit, depth 2) beside path tracing, at equal time",
-       "cornell_box.gltf",
-       "stage4@ref",
-       {"branching=3", "depth=2"},
-       "stage5@ref",
-       {"max-depth=3"},
-       "time",
-       "",
-       "color",
-       true,
-       "",
-       0},
-      {"nee-small-light",
-       "path tracing without and with next-event estimation under a small light, at equal rays",
-       "small_light.gltf",
-       "stage5@ref",
-       {"nee=off"},
-       "stage5@ref",
-       {"nee=on"},
-       "rays",
-       "",
-       "color",
-       true,
-       "",
-       0},
-      {"ray-explosion",
-       "rays per camera sample of naive recursion (4 rays per hit, depth 3) as a heatmap",
-       "cornell_box.gltf",
-       "stage4@ref",
-       {"branching=4", "depth=3"},
-       "",
-       {},
-       "time",
-       "",
-       "rays",
-       false,
-       "",
-       0},
-      {"mitchell-lobes",
-       "the Mitchell-Netravali filter at 2 samples per pixel: sharp edges, negative lobes, and "
-       "numerical normalisation keeping flat regions flat",
-       "grading_edges.gltf",
-       "stage1@ref",
-       {},
-       "",
-       {},
-       "time",
-       "",
-       "color",
-       false,
-       "mitchell",
-       2},
+namespace {
+
+// One demo per block: what it shows, then only the settings it changes.
+std::vector<ViewerDemo> declareDemos() {
+  std::vector<ViewerDemo> demos;
+  auto add = [&demos](const char* name, const char* shows, const char* scene,
+                      const char* integrator, std::vector<std::string> params) -> ViewerDemo& {
+    ViewerDemo& demo = demos.emplace_back();
+    demo.name = name;
+    demo.shows = shows;
+    demo.scene = scene;
+    demo.integrator = integrator;
+    demo.params = std::move(params);
+    return demo;
   };
+
+  ViewerDemo* demo = &add("nested-vs-4d",
+                          "AO as two nested integrals (4 AO rays per eye ray) beside one 4D "
+                          "integral, at equal rays, with their error plots",
+                          "cornell_box.gltf", "stage2@ref", {"ao-rays=4"});
+  demo->splitIntegrator = "stage3@ref";
+  demo->balance = "rays";
+  demo->sampler = "sobol";
+  demo->makeReference = true;
+
+  demo = &add("naive-vs-path",
+              "naive recursion (3 rays per hit, depth 2) beside path tracing, at equal time",
+              "cornell_box.gltf", "stage4@ref", {"branching=3", "depth=2"});
+  demo->splitIntegrator = "stage5@ref";
+  demo->splitParams = {"max-depth=3"};
+  demo->makeReference = true;
+
+  demo = &add("nee-small-light",
+              "path tracing without and with next-event estimation under a small light, at "
+              "equal rays",
+              "small_light.gltf", "stage5@ref", {"nee=off"});
+  demo->splitIntegrator = "stage5@ref";
+  demo->splitParams = {"nee=on"};
+  demo->balance = "rays";
+  demo->makeReference = true;
+
+  demo = &add("ray-explosion",
+              "rays per camera sample of naive recursion (4 rays per hit, depth 3) as a heatmap",
+              "cornell_box.gltf", "stage4@ref", {"branching=4", "depth=3"});
+  demo->display = "rays";
+
+  demo = &add("mitchell-lobes",
+              "the Mitchell-Netravali filter at 2 samples per pixel: sharp edges, negative "
+              "lobes, and numerical normalisation keeping flat regions flat",
+              "grading_edges.gltf", "stage1@ref", {});
+  demo->filter = "mitchell";
+  demo->spp = 2;
+  return demos;
+}
+
+}  // namespace
+
+const std::vector<ViewerDemo>& viewerDemos() {
+  static const std::vector<ViewerDemo> demos = declareDemos();
   return demos;
 }
 

@@ -77,16 +77,17 @@ TEST_F(SlurmCluster, AnEightTaskRenderArrayMergesIntoTheSingleProcessRender) {
 }
 
 TEST_F(SlurmCluster, ATaskKilledMidRunIsReportedAndRunAgain) {
-  // Four tasks of about a second each; task 2's render is killed once it runs.
-  const std::string render = kScene + " -i " + test::stage(5) + " --width 96";
+  // Four tasks of one to three seconds each (the skeleton's placeholder is cheaper); task 2's
+  // render is killed once it runs.
+  const std::string render = kScene + " -i " + test::stage(5) + " --width 128";
   auto job = std::async(std::launch::async, [&] {
-    return test::runCommand(clusterRender("--tasks 4 --spp 192", render));
+    return test::runCommand(clusterRender("--tasks 4 --spp 384", render));
   });
   bool killed = false;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (!killed && std::chrono::steady_clock::now() < deadline) {
     // "[p]art": the pattern must not match this command's own shell.
-    killed = test::runCommand("pkill -KILL -f 'samples 96:144 .*[p]art-0002.exr'").exitCode == 0;
+    killed = test::runCommand("pkill -KILL -f 'samples 192:288 .*[p]art-0002.exr'").exitCode == 0;
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
   const test::CommandOutcome outcome = job.get();
@@ -98,7 +99,7 @@ TEST_F(SlurmCluster, ATaskKilledMidRunIsReportedAndRunAgain) {
   EXPECT_NE(outcome.output.find("task 2 failed, then succeeded on attempt 2"), std::string::npos)
       << outcome.output;
   EXPECT_TRUE(fs::exists(dir_ / "merged.cluster/logs/task-2.retry1.log"));
-  expectMergedEqualsSingle(render, 192);
+  expectMergedEqualsSingle(render, 384);
 }
 
 TEST_F(SlurmCluster, AClassIsGradedAsAnArrayWithAVerdictForEachSubmission) {
