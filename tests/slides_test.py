@@ -45,6 +45,7 @@ class DeckParser(html.parser.HTMLParser):
         self.stacks = []  # per top-level section: the number of nested sections (0: a slide)
         self.images = []
         self.maths = 0
+        self.displayed_maths = 0
         self.in_math = 0
         self.in_script = False
         self.text = []
@@ -67,6 +68,7 @@ class DeckParser(html.parser.HTMLParser):
             self.images.append(attrs.get("src") or attrs.get("data-src") or "")
         elif tag == "math":
             self.maths += 1
+            self.displayed_maths += attrs.get("display") == "block"
             self.in_math += 1
         elif tag in ("script", "style"):
             self.in_script = True
@@ -134,13 +136,15 @@ def main():
         except Exception as error:  # a broken image
             fail(f"an embedded image does not decode: {error}")
     displayed_maths = len(re.findall(r"\$\$", source)) // 2
-    if parser.maths < displayed_maths:
-        fail(f"{parser.maths} typeset formulas, the source has {displayed_maths} displayed ones")
+    if parser.displayed_maths != displayed_maths:
+        fail(f"{parser.displayed_maths} displayed formulas typeset, the source has {displayed_maths}")
     text = " ".join(parser.text)
     for leftover in (r"\int", r"\frac", "$$", r"\sum"):
         if leftover in text:
             fail(f"TeX left untypeset in the deck's text: {leftover}")
 
+    if not os.path.exists(net_log):
+        sys.exit("FAIL: Chromium wrote no net log, so network requests cannot be checked")
     log = open(net_log, encoding="utf-8").read()
     requests = sorted(set(re.findall(r'"(?:url|original_url)":"((?:https?|wss?|ftp)://[^"]+)"', log)))
     requests = [url for url in requests if not BROWSER_HOSTS.match(url)]
@@ -151,7 +155,7 @@ def main():
     wanted = ["Five stages, one renderer", "A pixel is an integral",
               "Measured at equal rays and equal time", "Live: pathway view --demo nested-vs-4d",
               "The explosion, counted"]
-    by_title = {title.replace("`", ""): (top, nested) for top, nested, title in parser.titles}
+    by_title = {title: (top, nested) for top, nested, title in parser.titles}
     for title in wanted:
         if title not in by_title:
             fail(f"no slide titled '{title}'")

@@ -31,19 +31,22 @@ std::vector<ViewerDemo> declareDemos() {
   demo->sampler = "sobol";
   demo->makeReference = true;
 
+  // Path tracing on the left: the error plot's reference is made by the left pane.
   demo = &add("naive-vs-path",
-              "naive recursion (3 rays per hit, depth 2) beside path tracing, at equal time",
-              "cornell_box.gltf", "stage4@ref", {"branching=3", "depth=2"});
-  demo->splitIntegrator = "stage5@ref";
-  demo->splitParams = {"max-depth=3"};
+              "path tracing beside naive recursion (3 rays per hit), both 3 bounces deep, at "
+              "equal time",
+              "cornell_box.gltf", "stage5@ref", {"max-depth=3"});
+  demo->splitIntegrator = "stage4@ref";
+  demo->splitParams = {"branching=3", "depth=3"};
   demo->makeReference = true;
 
+  // The error plot's reference is made by the left pane: the one with NEE, far less noisy.
   demo = &add("nee-small-light",
-              "path tracing without and with next-event estimation under a small light, at "
+              "path tracing with and without next-event estimation under a small light, at "
               "equal rays",
-              "small_light.gltf", "stage5@ref", {"nee=off"});
+              "small_light.gltf", "stage5@ref", {"nee=on"});
   demo->splitIntegrator = "stage5@ref";
-  demo->splitParams = {"nee=on"};
+  demo->splitParams = {"nee=off"};
   demo->balance = "rays";
   demo->makeReference = true;
 
@@ -80,8 +83,8 @@ void applyViewerDemo(const std::string& name, ViewerOptions& options) {
     options.balance = demo.balance;
     options.display = demo.display;
     options.makeReference = options.makeReference || demo.makeReference;
-    if (!demo.filter.empty()) options.choices.filter = demo.filter;
-    if (demo.spp > 0) options.spp = demo.spp;
+    options.choices.filter = demo.filter.empty() ? filterTypeName(setting::kFilter) : demo.filter;
+    options.spp = demo.spp > 0 ? demo.spp : setting::kViewerSamplesPerPixel.defaultValue;
     return;
   }
   std::string known;

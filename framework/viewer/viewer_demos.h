@@ -24,14 +24,16 @@ struct ViewerDemo {
   std::string sampler;           // empty: the left integrator's own
   std::string display = "color";
   bool makeReference = false;  // make the error plot's reference once the first image is in
-  std::string filter;          // empty: box
+  std::string filter;          // empty: the default (box)
   uint32_t spp = 0;            // the spp target; 0: the viewer's default
 };
 
 const std::vector<ViewerDemo>& viewerDemos();
 
-// Sets what the demo `name` decides in `options` (the rest, window and headless options among
-// them, stays as given). Throws PathwayError naming the known demos for an unknown name.
+// Sets everything the demo decides in `options`: scene, integrators and parameters, split view,
+// balance, sampler, display, filter, spp target and the error-plot reference. The rest (window,
+// headless, screenshot, reference spp) stays as given. Throws PathwayError naming the known demos
+// for an unknown name.
 void applyViewerDemo(const std::string& name, ViewerOptions& options);
 
 // The options the demo stands for, as they would be typed after `pathway view`.
