@@ -97,6 +97,17 @@ std::string quoted(const std::vector<std::string>& words) {
   return line;
 }
 
+// Runs `check` (a command that only checks what every task will be given) once, here: when the
+// `command` options `passedOn` are refused, nothing is submitted and its message says why.
+void checkBeforeSubmitting(const std::vector<std::string>& check, const fs::path& work,
+                           const std::string& command, const std::vector<std::string>& passedOn) {
+  constexpr double kCheckTimeLimit = 600.0;  // it loads the scene and builds its BVH
+  const ChildOutcome checked = runChild(check, kCheckTimeLimit, (work / "logs/check.log").string());
+  if (!checked.succeeded())
+    throw PathwayError("the " + command + " options were refused (" + quoted(passedOn) + "):\n" +
+                       checked.output);
+}
+
 void printFailures(const JobOutcome& outcome) {
   for (const TaskOutcome* task : outcome.failedTasks()) {
     std::fprintf(stderr, "pathway: %s\n", describeFailure(*task).c_str());
@@ -142,10 +153,7 @@ int runClusterRender(const ClusterRenderOptions& options) {
   check.insert(check.end(), {"--spp", std::to_string(options.spp), "--samples",
                              "0:" + std::to_string(options.spp), "--check", "-o",
                              (work / "parts/check.exr").string()});
-  const ChildOutcome checked = runChild(check, 600.0, (work / "logs/check.log").string());
-  if (!checked.succeeded())
-    throw PathwayError("the render options were refused (" + quoted(options.renderArguments) +
-                       "):\n" + checked.output);
+  checkBeforeSubmitting(check, work, "render", options.renderArguments);
 
   ClusterJob job;
   job.name = "pathway-render";
@@ -207,10 +215,7 @@ int runClusterGrade(const ClusterGradeOptions& options) {
   // Every submission gets the same grade options: check them once, before anything is submitted.
   std::vector<std::string> check = {pathway, "grade", "--list-cases"};
   check.insert(check.end(), options.gradeArguments.begin(), options.gradeArguments.end());
-  const ChildOutcome checked = runChild(check, 60.0, (work / "logs/check.log").string());
-  if (!checked.succeeded())
-    throw PathwayError("the grade options were refused (" + quoted(options.gradeArguments) +
-                       "):\n" + checked.output);
+  checkBeforeSubmitting(check, work, "grade", options.gradeArguments);
 
   ClusterJob job;
   job.name = "pathway-grade";
