@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "sampling/hash.h"
+#include "sampling/sampler.h"
 
 namespace pathway::bench {
 namespace {
@@ -23,6 +24,16 @@ RTCRay embreeRay(const Vec3& origin, const Vec3& direction, float tMax) {
   r.mask = 0xFFFFFFFFu, r.id = 0, r.flags = 0;
   return r;
 }
+
+// One PCG32 per pixel, seeded from (pixel, seed), with SampleStream's two calls.
+struct PcgNumbers {
+  Pcg32 rng;
+  float next1D() { return rng.nextFloat(); }
+  Vec2 next2D() {
+    const float u = rng.nextFloat();
+    return Vec2(u, rng.nextFloat());
+  }
+};
 
 }  // namespace
 
@@ -41,21 +52,30 @@ RawPathImage RawPathTracer::render(const Camera& camera, const RawPathSettings& 
   image.height = settings.height;
   image.pixels.assign(static_cast<size_t>(settings.width) * settings.height, Color(0.0f));
   tbb::combinable<RayCounters> threadRays;
+  const Sampler sobol(SamplerType::Sobol, settings.samplesPerPixel, settings.seed);
+  // Box filter one pixel wide: a uniform point in the pixel, weight 1, own pixel only.
+  auto sample = [&](int x, int y, auto& numbers, RayCounters& rays) {
+    const Ray ray = camera.generateRay(Vec2(x, y) + numbers.next2D());
+    return radiance(ray, settings, numbers, rays);
+  };
   auto renderRows = [&](const tbb::blocked_range<int>& rows) {
     RayCounters rays;  // this tile's, added to the thread's total once at its end
     for (int y = rows.begin(); y < rows.end(); ++y) {
       for (int x = 0; x < settings.width; ++x) {
         const size_t pixel = static_cast<size_t>(y) * settings.width + x;
-        // One generator per pixel, seeded from (pixel, seed): the image does not depend on
-        // which thread rendered which rows.
-        Pcg32 rng(hashValues(pixel, settings.seed));
         Color sum(0.0f);
-        for (uint32_t i = 0; i < settings.samplesPerPixel; ++i) {
-          // Box filter one pixel wide: a uniform point in the pixel, weight 1, own pixel only.
-          const float jitterX = rng.nextFloat();
-          const float jitterY = rng.nextFloat();
-          const Ray ray = camera.generateRay(Vec2(x + jitterX, y + jitterY));
-          sum += radiance(ray, settings, rng, rays);
+        if (settings.sobol) {
+          const uint64_t pixelKey = sobol.pixelKey(x, y);
+          for (uint32_t i = 0; i < settings.samplesPerPixel; ++i) {
+            SampleStream numbers(sobol, pixelKey, i);
+            sum += sample(x, y, numbers, rays);
+          }
+        } else {
+          // One generator per pixel, seeded from (pixel, seed): the image does not depend on
+          // which thread rendered which rows.
+          PcgNumbers numbers{Pcg32(hashValues(pixel, settings.seed))};
+          for (uint32_t i = 0; i < settings.samplesPerPixel; ++i)
+            sum += sample(x, y, numbers, rays);
         }
         image.pixels[pixel] = sum / static_cast<float>(settings.samplesPerPixel);
       }
@@ -70,8 +90,9 @@ RawPathImage RawPathTracer::render(const Camera& camera, const RawPathSettings& 
 
 // Stage 5's estimator, step for step (solutions/stage5/stage5_path_tracing.cpp), with the
 // algebra an expert would fold: BRDF · cos / pdf of a cosine-weighted direction is the albedo.
-Color RawPathTracer::radiance(const Ray& cameraRay, const RawPathSettings& settings, Pcg32& rng,
-                              RayCounters& rays) const {
+template <typename Numbers>
+Color RawPathTracer::radiance(const Ray& cameraRay, const RawPathSettings& settings,
+                              Numbers& numbers, RayCounters& rays) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   Color result(0.0f);
@@ -113,19 +134,18 @@ Color RawPathTracer::radiance(const Ray& cameraRay, const RawPathSettings& setti
     const Vec3 leaving = offsetRayOrigin(position, normal);
 
     result +=
-        throughput * directLight(position, leaving, normal, shading.albedo, rng, context, rays);
+        throughput * directLight(position, leaving, normal, shading.albedo, numbers, context, rays);
 
     // One cosine-weighted continuation: BRDF · cos / pdf = (albedo / π) · cos / (cos / π).
-    const float u1 = rng.nextFloat();
-    const float u2 = rng.nextFloat();
-    const float r = std::sqrt(u1), phi = 2.0f * kPi * u2;
-    const Vec3 local(r * std::cos(phi), r * std::sin(phi), std::sqrt(1.0f - u1));
+    const Vec2 uDirection = numbers.next2D();
+    const float r = std::sqrt(uDirection.x), phi = 2.0f * kPi * uDirection.y;
+    const Vec3 local(r * std::cos(phi), r * std::sin(phi), std::sqrt(1.0f - uDirection.x));
     throughput *= shading.albedo;
 
     if (bounce + 1 >= settings.rouletteDepth) {
       // As stage 5: survive with q = min(0.95, max throughput), divide by q.
       const float q = std::fmin(0.95f, maxComponent(throughput));
-      if (rng.nextFloat() >= q) break;
+      if (numbers.next1D() >= q) break;
       throughput /= q;
     }
     origin = leaving;
@@ -135,17 +155,17 @@ Color RawPathTracer::radiance(const Ray& cameraRay, const RawPathSettings& setti
 }
 
 // Next-event estimation: one shadow ray to a uniform point on an emitter picked by area.
+template <typename Numbers>
 Color RawPathTracer::directLight(const Vec3& position, const Vec3& leaving, const Vec3& normal,
-                                 const Color& albedo, Pcg32& rng, RTCIntersectContext& context,
-                                 RayCounters& rays) const {
-  const float uPick = rng.nextFloat();
-  const float uPoint1 = rng.nextFloat();
-  const float uPoint2 = rng.nextFloat();
+                                 const Color& albedo, Numbers& numbers,
+                                 RTCIntersectContext& context, RayCounters& rays) const {
+  const float uPick = numbers.next1D();
+  const Vec2 uPoint = numbers.next2D();
   if (lights_.empty()) return Color(0.0f);
   const EmitterPicker::Pick pick = lights_.pick(uPick);
   const EmissiveTriangle& light = *pick.emitter;
-  const float s = std::sqrt(uPoint1);  // uniform on the triangle: density 1 / area
-  const float b0 = 1.0f - s, b1 = uPoint2 * s;
+  const float s = std::sqrt(uPoint.x);  // uniform on the triangle: density 1 / area
+  const float b0 = 1.0f - s, b1 = uPoint.y * s;
   const Vec3 target = b0 * light.p0 + b1 * light.p1 + (1.0f - b0 - b1) * light.p2;
 
   const Vec3 toLight = target - position;

@@ -3,8 +3,13 @@
 // to a point on an emitter picked by area, one cosine-weighted continuation, Russian roulette
 // after rr-depth, max-depth bounces, emission seen by camera rays only, box filter one pixel wide)
 // on the same scene and camera, with none of the framework's render machinery in between: no
-// RayTracer, RenderContext, Renderer, Film or Sampler. Whatever the framework spends beyond this
-// tracer is overhead that a faster framework could remove.
+// RayTracer, RenderContext, Renderer or Film. Whatever the framework spends beyond this tracer is
+// overhead that a faster framework could remove.
+//
+// Its random numbers come from one PCG32 per pixel, or (`sobol`) are stage 5's default numbers:
+// the framework's Owen-scrambled Sobol' sampler, drawn in the order stage 5 draws them, so the
+// two tracers compute the same estimator with the same numbers and the only difference left is
+// the machinery.
 #pragma once
 
 #include <cstdint>
@@ -25,6 +30,7 @@ struct RawPathSettings {
   int maxDepth = 5;       // stage 5's max-depth: most bounces (-1: no limit)
   int rouletteDepth = 3;  // stage 5's rr-depth: bounces before Russian roulette starts
   uint64_t seed = 0;
+  bool sobol = false;  // the framework's Owen-scrambled Sobol' numbers instead of PCG32
 };
 
 struct RawPathImage {
@@ -50,11 +56,14 @@ class RawPathTracer {
     bool doubleSided;
   };
 
-  Color radiance(const Ray& cameraRay, const RawPathSettings& settings, Pcg32& rng,
+  // `Numbers` gives next1D() and next2D(), as the framework's SampleStream does.
+  template <typename Numbers>
+  Color radiance(const Ray& cameraRay, const RawPathSettings& settings, Numbers& numbers,
                  RayCounters& rays) const;
   // `leaving`: the hit point already moved off its surface to the side of `normal`.
+  template <typename Numbers>
   Color directLight(const Vec3& position, const Vec3& leaving, const Vec3& normal,
-                    const Color& albedo, Pcg32& rng, RTCIntersectContext& context,
+                    const Color& albedo, Numbers& numbers, RTCIntersectContext& context,
                     RayCounters& rays) const;
 
   const Scene& scene_;

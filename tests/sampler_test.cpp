@@ -374,22 +374,25 @@ TEST(SamplerAll, DimensionsAreUncorrelated) {
   }
 }
 
-// The stream draws four dimensions at a time; every value must be the one get() gives.
-TEST(SamplerStream, BlocksOfFourGiveTheSameValuesAsGet) {
+// The stream draws its dimensions in blocks, the first of 4 or 8; every value must be the one
+// get() gives, whatever the blocks.
+TEST(SamplerStream, BlocksGiveTheSameValuesAsGet) {
   for (SamplerType type : kAllTypes) {
     const Sampler sampler(type, 16, 9);
     for (uint32_t index : {0u, 1u, 7u, 15u, 16u, 1000u}) {
-      SampleStream stream(sampler, 5, 6, index);
-      for (uint32_t d = 0; d < 24;) {
-        if (d % 3 == 0) {  // a mix of 1D and 2D draws, so blocks are entered both ways
-          const Vec2 uv = stream.next2D();
-          if (d % 2 == 1) ++d;
-          EXPECT_EQ(uv.x, sampler.get(5, 6, index, d)) << samplerTypeName(type) << " d " << d;
-          EXPECT_EQ(uv.y, sampler.get(5, 6, index, d + 1)) << samplerTypeName(type) << " d " << d;
-          d += 2;
-        } else {
-          EXPECT_EQ(stream.next1D(), sampler.get(5, 6, index, d)) << samplerTypeName(type);
-          ++d;
+      for (uint32_t firstBlock : {4u, 8u}) {
+        SampleStream stream(sampler, sampler.pixelKey(5, 6), index, firstBlock);
+        for (uint32_t d = 0; d < 28;) {
+          if (d % 3 == 0) {  // a mix of 1D and 2D draws, so blocks are entered both ways
+            const Vec2 uv = stream.next2D();
+            if (d % 2 == 1) ++d;
+            EXPECT_EQ(uv.x, sampler.get(5, 6, index, d)) << samplerTypeName(type) << " d " << d;
+            EXPECT_EQ(uv.y, sampler.get(5, 6, index, d + 1)) << samplerTypeName(type) << " d " << d;
+            d += 2;
+          } else {
+            EXPECT_EQ(stream.next1D(), sampler.get(5, 6, index, d)) << samplerTypeName(type);
+            ++d;
+          }
         }
       }
     }
@@ -398,7 +401,7 @@ TEST(SamplerStream, BlocksOfFourGiveTheSameValuesAsGet) {
 
 TEST(SamplerStream, PairsStartOnEvenDimensions) {
   const Sampler sampler(SamplerType::Independent, 4, 1);
-  SampleStream stream(sampler, 2, 3, 1);
+  SampleStream stream(sampler, sampler.pixelKey(2, 3), 1);
   EXPECT_EQ(stream.next1D(), sampler.get(2, 3, 1, 0));
   const Vec2 uv = stream.next2D();  // skips dimension 1
   EXPECT_EQ(uv.x, sampler.get(2, 3, 1, 2));

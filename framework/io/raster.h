@@ -1,7 +1,8 @@
-// Image files as plain rasters. EXR goes through OpenEXR (exr_files.h); every other format through
-// the image-file module (image_file_module.cpp, the one part of Pathway linked with OpenImageIO).
-// OpenImageIO pulls in some 250 shared libraries, whose loading took a quarter of a second, so the
-// module is loaded only when such a file is first read or written (raster_files.h).
+// Image files as plain rasters. EXR goes through OpenEXR (exr_files.h) and PNG output through
+// libpng (png_files.h); every other format, and reading PNG, through the image-file module
+// (image_file_module.cpp, the one part of Pathway linked with OpenImageIO). OpenImageIO pulls in
+// some 250 shared libraries, whose loading took a quarter of a second, so the module is loaded
+// only when such a file is first read or written (raster_files.h).
 #pragma once
 
 #include <string>

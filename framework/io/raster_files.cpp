@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "io/exr_files.h"
+#include "io/png_files.h"
 
 namespace pathway {
 namespace {
@@ -42,8 +43,11 @@ const ImageFileModule& imageFileModule() {
 
 void writeRaster(const std::string& path, const RasterHeader& header, bool eightBit,
                  const void* pixels) {
-  if (lowerExtension(path) == ".exr" && !eightBit)
+  const std::string extension = lowerExtension(path);
+  if (extension == ".exr" && !eightBit)
     return writeExrRaster(path, header, static_cast<const float*>(pixels));
+  if (extension == ".png" && eightBit)
+    return writePngRaster(path, header, static_cast<const uint8_t*>(pixels));
   std::string error;
   if (!imageFileModule().write(path.c_str(), header, eightBit, pixels, error))
     throw PathwayError(path + ": writing failed: " + error);

@@ -1,5 +1,6 @@
-// Reading and writing rasters: EXR through OpenEXR (exr_files.h), every other format through the
-// image-file module (raster.h), loaded on first use.
+// Reading and writing rasters: EXR through OpenEXR (exr_files.h), 8-bit PNG output through libpng
+// (png_files.h), everything else (reading PNG too) through the image-file module (raster.h),
+// loaded on first use.
 #pragma once
 
 #include <string>

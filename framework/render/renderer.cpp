@@ -73,6 +73,8 @@ void Renderer::renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount
   tile.counters = RayCounters{};  // (the block is empty: the last merge left it so)
   const RenderContext context(tracer_, tile.counters);
   uint64_t* pixelRays = tile.rays.data();
+  // How many numbers the previous sample drew predicts the next one's (SampleStream).
+  uint32_t firstBlockDimensions = Sampler::kMaxBlockDimensions;
   for (int y = tile.y0; y < tile.y1; ++y) {
     for (int x = tile.x0; x < tile.x1; ++x, ++pixelRays) {
       // Checked per pixel, so even a pass of many samples per pixel stops promptly.
@@ -80,9 +82,10 @@ void Renderer::renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount
       const uint64_t raysBefore = tile.counters.totalRays();
       const uint64_t pixelKey = sampler_.pixelKey(x, y);
       for (uint32_t index = firstSample; index < firstSample + sampleCount; ++index) {
-        SampleStream samples(sampler_, pixelKey, index);
+        SampleStream samples(sampler_, pixelKey, index, firstBlockDimensions);
         const Vec2 filmPosition = Vec2(x, y) + samples.next2D();
         const Color radiance = integrator_.Li(camera_.generateRay(filmPosition), samples, context);
+        firstBlockDimensions = samples.dimension() <= 4 ? 4 : Sampler::kMaxBlockDimensions;
         if (!isFinite(radiance)) {  // counted and dropped, never written
           ++tile.counters.invalidSamples;
           continue;

@@ -153,15 +153,18 @@ Vec2 Sampler::get2D(uint64_t pixelKey, uint32_t index, uint32_t dimension) const
   return Vec2(get(pixelKey, index, dimension), get(pixelKey, index, dimension + 1));
 }
 
-void Sampler::getBlock(uint64_t pixelKey, uint32_t index, uint32_t firstDimension,
-                       float values[4]) const {
+void Sampler::getBlock(uint64_t pixelKey, uint32_t index, uint32_t firstDimension, uint32_t count,
+                       float values[]) const {
   if (type_ == SamplerType::Sobol) {
-    uint32_t bits[4];
-    sobolBlock(pixelKey, index, firstDimension, bits);
-    for (uint32_t d = 0; d < 4; ++d) values[d] = toUnitFloat(bits[d]);
+    // One 4D Sobol' point per four dimensions; with eight, the two are independent work that
+    // the processor overlaps.
+    uint32_t bits[kMaxBlockDimensions];
+    for (uint32_t d = 0; d < count; d += 4)
+      sobolBlock(pixelKey, index, firstDimension + d, bits + d);
+    for (uint32_t d = 0; d < count; ++d) values[d] = toUnitFloat(bits[d]);
     return;
   }
-  for (uint32_t d = 0; d < 4; d += 2) {
+  for (uint32_t d = 0; d < count; d += 2) {
     const Vec2 pair = get2D(pixelKey, index, firstDimension + d);
     values[d] = pair.x;
     values[d + 1] = pair.y;

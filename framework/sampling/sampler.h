@@ -36,9 +36,11 @@ class Sampler {
   float get(uint64_t pixelKey, uint32_t index, uint32_t dimension) const;
   // Dimensions `dimension` (even) and `dimension + 1` together: the same values, faster.
   Vec2 get2D(uint64_t pixelKey, uint32_t index, uint32_t dimension) const;
-  // The four dimensions firstDimension .. firstDimension + 3 (firstDimension a multiple of 4):
-  // the same values as get(), with the work they share done once.
-  void getBlock(uint64_t pixelKey, uint32_t index, uint32_t firstDimension, float values[4]) const;
+  // Dimensions firstDimension .. firstDimension + count - 1 (firstDimension a multiple of 4,
+  // count 4 or 8): the same values as get(), with the work they share done once and side by side.
+  static constexpr uint32_t kMaxBlockDimensions = 8;
+  void getBlock(uint64_t pixelKey, uint32_t index, uint32_t firstDimension, uint32_t count,
+                float values[]) const;
   // A hash of (pixel, seed): every sampler's randomisation starts from it.
   uint64_t pixelKey(uint32_t pixelX, uint32_t pixelY) const;
 
@@ -52,15 +54,23 @@ class Sampler {
 };
 
 // Walks the dimensions of one camera sample in order. Integrators take their numbers from here.
-// It draws them four at a time (Sampler::getBlock): the values of a block share work (Sobol':
-// one index shuffle; independent: one hash per pair) and are computed side by side.
+// It draws them in blocks (Sampler::getBlock): the values of a block share work (Sobol': one
+// index shuffle per four; independent: one hash per pair) and are computed side by side, so their
+// latencies overlap. A path tracer takes about eight dimensions per bounce, so blocks hold eight:
+// a bounce waits for one block, not two, and the first block (drawn before the camera ray is
+// traced) already holds the first bounce's numbers. An integrator that needs only dimensions
+// 0-3 (4D AO) would waste half of such a block, so the first block's size is the caller's guess
+// (the renderer's: what the previous sample used). The values never depend on the block sizes.
 class SampleStream {
  public:
-  SampleStream(const Sampler& sampler, uint32_t pixelX, uint32_t pixelY, uint32_t index)
-      : SampleStream(sampler, sampler.pixelKey(pixelX, pixelY), index) {}
-  // With the pixel's key (Sampler::pixelKey) computed once for all of its samples.
-  SampleStream(const Sampler& sampler, uint64_t pixelKey, uint32_t index)
-      : sampler_(&sampler), pixelKey_(pixelKey), index_(index) {}
+  // Sample `index` of the pixel whose key (Sampler::pixelKey) is `pixelKey`: the key is computed
+  // once for all of a pixel's samples. `firstBlockDimensions`: 4 or 8 (see above).
+  SampleStream(const Sampler& sampler, uint64_t pixelKey, uint32_t index,
+               uint32_t firstBlockDimensions = Sampler::kMaxBlockDimensions)
+      : sampler_(&sampler),
+        pixelKey_(pixelKey),
+        index_(index),
+        firstBlockDimensions_(firstBlockDimensions == 4 ? 4 : Sampler::kMaxBlockDimensions) {}
 
   float next1D() {
     const float u = current();
@@ -69,10 +79,10 @@ class SampleStream {
   }
   Vec2 next2D() {
     // Pairs start on even dimensions, so a pair is always one stratified/Sobol' 2D projection
-    // (and never straddles two blocks of four).
+    // (and never straddles two blocks).
     if (dimension_ % 2 == 1) ++dimension_;
     const float u = current();
-    const Vec2 uv(u, block_[dimension_ % 4 + 1]);
+    const Vec2 uv(u, block_[dimension_ - blockStart_ + 1]);
     dimension_ += 2;
     return uv;
   }
@@ -80,20 +90,26 @@ class SampleStream {
 
  private:
   float current() {
-    const uint32_t first = dimension_ - dimension_ % 4;
-    if (first != blockStart_) {
-      sampler_->getBlock(pixelKey_, index_, first, block_);
-      blockStart_ = first;
+    if (dimension_ - blockStart_ >= blockSize_) {
+      if (dimension_ < firstBlockDimensions_) {
+        blockStart_ = 0, blockSize_ = firstBlockDimensions_;
+      } else {  // blocks of eight after the first
+        blockStart_ = dimension_ - (dimension_ - firstBlockDimensions_) % 8;
+        blockSize_ = 8;
+      }
+      sampler_->getBlock(pixelKey_, index_, blockStart_, blockSize_, block_);
     }
-    return block_[dimension_ % 4];
+    return block_[dimension_ - blockStart_];
   }
 
   const Sampler* sampler_;
   uint64_t pixelKey_;
   uint32_t index_;
+  uint32_t firstBlockDimensions_;
   uint32_t dimension_ = 0;
-  uint32_t blockStart_ = 1;  // the first dimension block_ holds (1: none yet)
-  float block_[4];
+  uint32_t blockStart_ = 0;  // block_ holds dimensions blockStart_ .. + blockSize_ - 1
+  uint32_t blockSize_ = 0;   // (none yet)
+  float block_[Sampler::kMaxBlockDimensions];
 };
 
 }  // namespace pathway

@@ -112,14 +112,6 @@ uint32_t laineKarrasPermutation(uint32_t x, uint32_t seed) {
 
 }  // namespace
 
-uint32_t reverseBits(uint32_t x) {
-  x = __builtin_bswap32(x);  // the bytes in one instruction, then the bits within each byte
-  x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
-  x = ((x & 0x33333333u) << 2) | ((x & 0xccccccccu) >> 2);
-  x = ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
-  return x;
-}
-
 uint32_t sobolSample(uint32_t index, uint32_t dimension) {
   assert(dimension < kSobolDimensions);
   const Matrix& columns = kMatrices[dimension];

@@ -23,7 +23,13 @@ uint32_t sobolSample(uint32_t index, uint32_t dimension);
 // which is what makes it usable for shuffling sample indices.
 uint32_t nestedUniformScramble(uint32_t x, uint32_t seed);
 
-uint32_t reverseBits(uint32_t x);
+inline uint32_t reverseBits(uint32_t x) {
+  x = __builtin_bswap32(x);  // the bytes in one instruction, then the bits within each byte
+  x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
+  x = ((x & 0x33333333u) << 2) | ((x & 0xccccccccu) >> 2);
+  x = ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
+  return x;
+}
 
 // The sampler's fast path: the same values as
 //   nestedUniformScramble(sobolSample(nestedUniformScramble(index, shuffleSeed), d), valueSeeds[d])
