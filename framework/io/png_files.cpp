@@ -23,7 +23,6 @@ void writePngRaster(const std::string& path, const RasterHeader& header, const u
   image.format = kFormats[channels - 1];
   if (!png_image_write_to_file(&image, path.c_str(), 0, pixels, 0, nullptr))
     throw PathwayError(path + ": writing failed: " + image.message);
-  png_image_free(&image);
 }
 
 }  // namespace pathway

@@ -85,7 +85,9 @@ void Renderer::renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount
         SampleStream samples(sampler_, pixelKey, index, firstBlockDimensions);
         const Vec2 filmPosition = Vec2(x, y) + samples.next2D();
         const Color radiance = integrator_.Li(camera_.generateRay(filmPosition), samples, context);
-        firstBlockDimensions = samples.dimension() <= 4 ? 4 : Sampler::kMaxBlockDimensions;
+        firstBlockDimensions = samples.dimension() <= Sampler::kMinBlockDimensions
+                                   ? Sampler::kMinBlockDimensions
+                                   : Sampler::kMaxBlockDimensions;
         if (!isFinite(radiance)) {  // counted and dropped, never written
           ++tile.counters.invalidSamples;
           continue;

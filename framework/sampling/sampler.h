@@ -38,6 +38,7 @@ class Sampler {
   Vec2 get2D(uint64_t pixelKey, uint32_t index, uint32_t dimension) const;
   // Dimensions firstDimension .. firstDimension + count - 1 (firstDimension a multiple of 4,
   // count 4 or 8): the same values as get(), with the work they share done once and side by side.
+  static constexpr uint32_t kMinBlockDimensions = 4;  // one Sobol' point
   static constexpr uint32_t kMaxBlockDimensions = 8;
   void getBlock(uint64_t pixelKey, uint32_t index, uint32_t firstDimension, uint32_t count,
                 float values[]) const;
@@ -70,7 +71,9 @@ class SampleStream {
       : sampler_(&sampler),
         pixelKey_(pixelKey),
         index_(index),
-        firstBlockDimensions_(firstBlockDimensions == 4 ? 4 : Sampler::kMaxBlockDimensions) {}
+        firstBlockDimensions_(firstBlockDimensions == Sampler::kMinBlockDimensions
+                                  ? Sampler::kMinBlockDimensions
+                                  : Sampler::kMaxBlockDimensions) {}
 
   float next1D() {
     const float u = current();
@@ -94,8 +97,8 @@ class SampleStream {
       if (dimension_ < firstBlockDimensions_) {
         blockStart_ = 0, blockSize_ = firstBlockDimensions_;
       } else {  // blocks of eight after the first
-        blockStart_ = dimension_ - (dimension_ - firstBlockDimensions_) % 8;
-        blockSize_ = 8;
+        blockSize_ = Sampler::kMaxBlockDimensions;
+        blockStart_ = dimension_ - (dimension_ - firstBlockDimensions_) % blockSize_;
       }
       sampler_->getBlock(pixelKey_, index_, blockStart_, blockSize_, block_);
     }
