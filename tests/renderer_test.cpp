@@ -147,6 +147,33 @@ TEST(Renderer, CancelledPassLeavesTheFilmUntouched) {
   EXPECT_FALSE(renderer.finished());
 }
 
+// Passes without a cancel flag leave their sums in the tile blocks until the film is asked for;
+// a cancelled pass after them must drop only its own samples, not theirs.
+TEST(Renderer, CancelledPassKeepsTheEarlierPassesNotYetMerged) {
+  PATHWAY_REQUIRE_SOLUTIONS();
+  const Scene scene = test::boxRoom();
+  const RayTracer tracer(scene);
+  const Camera camera(scene, 32, 32);
+  const auto integrator = makeIntegrator(1, scene);
+  RenderSettings settings;
+  settings.width = settings.height = 32;
+  settings.samplesPerPixel = 4;
+  Renderer cancelledLast(tracer, camera, *integrator, test::stage1UnderTest(), settings);
+  Renderer twoPasses(tracer, camera, *integrator, test::stage1UnderTest(), settings);
+  const std::atomic<bool> cancel{true};
+  for (Renderer* renderer : {&cancelledLast, &twoPasses}) {
+    ASSERT_TRUE(renderer->renderPass());
+    ASSERT_TRUE(renderer->renderPass());
+  }
+  EXPECT_FALSE(cancelledLast.renderPass(&cancel));
+  EXPECT_EQ(cancelledLast.stats().samplesPerPixel, 2u);
+  const Image expected = twoPasses.film().develop();
+  const Image actual = cancelledLast.film().develop();
+  EXPECT_GT(expected.pixels[16 * 32 + 16].x, 0.0f);  // the box room is lit: not an empty film
+  EXPECT_EQ(0, std::memcmp(expected.pixels.data(), actual.pixels.data(),
+                           expected.pixels.size() * sizeof(Color)));
+}
+
 TEST(Renderer, CancelStopsAPassOfManySamplesPerPixelPromptly) {
   PATHWAY_REQUIRE_SOLUTIONS();
   const Scene scene = test::boxRoom();

@@ -246,6 +246,32 @@ TEST(Sobol, OwenScrambledFastPathEqualsTheFormula) {
   }
 }
 
+// The eight-lane path, in both versions, against the same formula and toUnitFloat.
+TEST(Sobol, EightLanePathEqualsTheFormulaInBothVersions) {
+  using Version = void (*)(uint32_t, const uint32_t[2], const uint32_t[8], float[8]);
+  std::vector<std::pair<const char*, Version>> versions = {
+      {"portable", owenScrambledSobolFloats8Portable}, {"dispatched", owenScrambledSobolFloats8}};
+  if (processorHasAvx2()) versions.emplace_back("AVX2", owenScrambledSobolFloats8Avx2);
+  Pcg32 rng(23);
+  for (int trial = 0; trial < 20000; ++trial) {
+    const uint32_t index = trial < 1000 ? uint32_t(trial) : rng.nextUInt();
+    const uint32_t shuffleSeeds[2] = {rng.nextUInt(), rng.nextUInt()};
+    uint32_t valueSeeds[8];
+    for (uint32_t& seed : valueSeeds) seed = rng.nextUInt();
+    for (const auto& [name, version] : versions) {
+      float values[8];
+      version(reverseBits(index), shuffleSeeds, valueSeeds, values);
+      for (uint32_t lane = 0; lane < 8; ++lane) {
+        const uint32_t expected = nestedUniformScramble(
+            sobolSample(nestedUniformScramble(index, shuffleSeeds[lane / 4]), lane % 4),
+            valueSeeds[lane]);
+        ASSERT_EQ(values[lane], toUnitFloat(expected))
+            << name << ", index " << index << ", lane " << lane;
+      }
+    }
+  }
+}
+
 TEST(Sobol, ScrambleMapsAlignedBlocksOntoAlignedBlocks) {
   for (uint32_t seed : {0u, 1u, 0xdeadbeefu}) {
     std::set<uint32_t> low;

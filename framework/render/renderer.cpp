@@ -106,6 +106,7 @@ bool Renderer::renderPass(const std::atomic<bool>* cancel) {
   const uint32_t first = settings_.firstSample() + stats_.samplesPerPixel;
   const uint32_t count = std::min(settings_.samplesPerPass, settings_.endSample() - first);
   auto cancelled = [cancel] { return cancel && cancel->load(std::memory_order_relaxed); };
+  if (cancel) mergeBlocks();
 
   arena_->execute([&] {
     tbb::parallel_for(size_t(0), tiles_.size(), [&](size_t i) {
@@ -118,15 +119,7 @@ bool Renderer::renderPass(const std::atomic<bool>* cancel) {
     return false;
   }
 
-  // Merge class by class (each class in parallel, its tiles disjoint); every pixel then receives
-  // its contributions in the same order whatever the thread count.
-  arena_->execute([&] {
-    for (int mergeClass = 0; mergeClass < 4; ++mergeClass) {
-      tbb::parallel_for(size_t(0), tiles_.size(), [&](size_t i) {
-        if (tiles_[i].mergeClass == mergeClass) film_.merge(tiles_[i].block);
-      });
-    }
-  });
+  blocksHoldSums_ = true;
   for (const Tile& tile : tiles_) {
     stats_.counters += tile.counters;
     const uint64_t* pixelRays = tile.rays.data();
@@ -137,6 +130,25 @@ bool Renderer::renderPass(const std::atomic<bool>* cancel) {
   stats_.samplesPerPixel += count;
   stats_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return true;
+}
+
+void Renderer::mergeBlocks() {
+  if (!blocksHoldSums_) return;
+  // Class by class (each class in parallel, its tiles disjoint); every pixel then receives its
+  // contributions in the same order whatever the thread count.
+  arena_->execute([&] {
+    for (int mergeClass = 0; mergeClass < 4; ++mergeClass) {
+      tbb::parallel_for(size_t(0), tiles_.size(), [&](size_t i) {
+        if (tiles_[i].mergeClass == mergeClass) film_.merge(tiles_[i].block);
+      });
+    }
+  });
+  blocksHoldSums_ = false;
+}
+
+const Film& Renderer::film() {
+  mergeBlocks();
+  return film_;
 }
 
 bool Renderer::renderAll(const std::function<void(const RenderStats&)>& onPass,

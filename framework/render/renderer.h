@@ -1,6 +1,10 @@
 // The renderer: tiles x passes on TBB. Each pass adds `samplesPerPass` samples to every pixel;
 // each tile splats into its own FilmBlock and the blocks are merged in a fixed order, so the image
 // is bit-identical for any thread count. A render can be cancelled at any pixel.
+//
+// Merging touches every block and the whole film (about 100 bytes of sums per pixel), so it
+// happens when the film is asked for, not after every pass: a render that only wants its final
+// image merges once. A pass that may be cancelled is the exception (see renderPass).
 #pragma once
 
 #include <tbb/task_arena.h>
@@ -36,7 +40,8 @@ class Renderer {
   ~Renderer();
 
   // Renders the next pass. Returns false (and leaves the film as it was before the pass) when
-  // `cancel` became true during it.
+  // `cancel` became true during it. With a `cancel` flag, earlier passes are merged first, so
+  // that the blocks then hold only this pass and can be emptied if it is cancelled.
   bool renderPass(const std::atomic<bool>* cancel = nullptr);
   bool finished() const { return stats_.samplesPerPixel >= settings_.samplesToRender(); }
 
@@ -44,7 +49,8 @@ class Renderer {
   bool renderAll(const std::function<void(const RenderStats&)>& onPass = {},
                  const std::atomic<bool>* cancel = nullptr);
 
-  const Film& film() const { return film_; }
+  // The sums of every finished pass (merging what the blocks still hold).
+  const Film& film();
   // Rays traced for the samples of each pixel so far (rows top to bottom), for ray heatmaps.
   const std::vector<uint64_t>& raysPerPixel() const { return raysPerPixel_; }
   const RenderStats& stats() const { return stats_; }
@@ -55,6 +61,7 @@ class Renderer {
   struct Tile;
   void renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount,
                   const std::atomic<bool>* cancel);
+  void mergeBlocks();
 
   const RayTracer& tracer_;
   const Camera& camera_;
@@ -66,6 +73,7 @@ class Renderer {
   Film film_;
   std::vector<uint64_t> raysPerPixel_;
   std::vector<Tile> tiles_;
+  bool blocksHoldSums_ = false;  // finished passes not yet merged into film_
   std::unique_ptr<tbb::task_arena> arena_;
   RenderStats stats_;
 };

@@ -158,9 +158,20 @@ void Sampler::getBlock(uint64_t pixelKey, uint32_t index, uint32_t firstDimensio
   if (type_ == SamplerType::Sobol) {
     // One 4D Sobol' point per four dimensions; with eight, the two are independent work that
     // the processor overlaps.
-    uint32_t bits[kMaxBlockDimensions];
-    for (uint32_t d = 0; d < count; d += 4)
-      sobolBlock(pixelKey, index, firstDimension + d, bits + d);
+    if (count == kMaxBlockDimensions) {
+      uint32_t shuffleSeeds[2], valueSeeds[kMaxBlockDimensions];
+      for (uint32_t block = 0; block < 2; ++block)
+        shuffleSeeds[block] = sobolShuffleSeed(pixelKey, firstDimension + 4 * block);
+      for (uint32_t d = 0; d < count; d += 2) {
+        const uint64_t bits = hashCombine(pixelKey ^ kValueScrambleSalt, (firstDimension + d) / 2);
+        valueSeeds[d] = static_cast<uint32_t>(bits);
+        valueSeeds[d + 1] = static_cast<uint32_t>(bits >> 32);
+      }
+      owenScrambledSobolFloats8(reverseBits(index), shuffleSeeds, valueSeeds, values);
+      return;
+    }
+    uint32_t bits[kMinBlockDimensions];
+    sobolBlock(pixelKey, index, firstDimension, bits);
     for (uint32_t d = 0; d < count; ++d) values[d] = toUnitFloat(bits[d]);
     return;
   }

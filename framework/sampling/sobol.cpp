@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cassert>
+#include <cstring>
 #include <iterator>
 
 namespace pathway {
@@ -110,6 +111,57 @@ uint32_t laineKarrasPermutation(uint32_t x, uint32_t seed) {
   return x;
 }
 
+// The reversed coordinate of dimension d (< 4) of the point whose reversed index is `shuffled`.
+uint32_t reversedSobolCoordinate(uint32_t d, uint32_t shuffled) {
+  const auto& t = kReversedByteTables[d];
+  return t[0][shuffled & 0xffu] ^ t[1][(shuffled >> 8) & 0xffu] ^ t[2][(shuffled >> 16) & 0xffu] ^
+         t[3][shuffled >> 24];
+}
+
+// Eight 32-bit lanes (GCC's vector extension: the operators act lane by lane).
+typedef uint32_t U32x8 __attribute__((vector_size(32)));
+typedef int32_t I32x8 __attribute__((vector_size(32)));
+typedef float F32x8 __attribute__((vector_size(32)));
+
+// laineKarrasPermutation and reverseBits, lane by lane, in place. (By reference: passing 32-byte
+// vectors by value would depend on whether the caller was compiled for AVX.)
+void laineKarrasPermute(U32x8& x, const U32x8& seed) {
+  x += seed;
+  x ^= x * 0x6c50b47cu;
+  x ^= x * 0xb82f1e52u;
+  x ^= x * 0xc7afe638u;
+  x ^= x * 0x8d22f6e6u;
+}
+
+void reverseBitsInPlace(U32x8& x) {
+  x = (x << 16) | (x >> 16);
+  x = ((x & 0x00ff00ffu) << 8) | ((x & 0xff00ff00u) >> 8);
+  x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
+  x = ((x & 0x33333333u) << 2) | ((x & 0xccccccccu) >> 2);
+  x = ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
+}
+
+// The body of owenScrambledSobolFloats8, compiled into each of the two versions below (inlining
+// gives it their instruction sets).
+[[gnu::always_inline]] inline void sobolFloats8(uint32_t reversedIndex,
+                                                const uint32_t shuffleSeeds[2],
+                                                const uint32_t valueSeeds[8], float values[8]) {
+  const uint32_t shuffled0 = laineKarrasPermutation(reversedIndex, shuffleSeeds[0]);
+  const uint32_t shuffled1 = laineKarrasPermutation(reversedIndex, shuffleSeeds[1]);
+  // The table lookups stay scalar (a gather is no faster); the rest is lane by lane.
+  U32x8 bits = {reversedSobolCoordinate(0, shuffled0), reversedSobolCoordinate(1, shuffled0),
+                reversedSobolCoordinate(2, shuffled0), reversedSobolCoordinate(3, shuffled0),
+                reversedSobolCoordinate(0, shuffled1), reversedSobolCoordinate(1, shuffled1),
+                reversedSobolCoordinate(2, shuffled1), reversedSobolCoordinate(3, shuffled1)};
+  U32x8 seeds;
+  std::memcpy(&seeds, valueSeeds, sizeof seeds);
+  laineKarrasPermute(bits, seeds);
+  reverseBitsInPlace(bits);
+  // toUnitFloat: the top 24 bits, exact in a float and in a signed int.
+  const F32x8 unit = __builtin_convertvector(reinterpret_cast<I32x8>(bits >> 8), F32x8) * 0x1p-24f;
+  std::memcpy(values, &unit, sizeof unit);
+}
+
 }  // namespace
 
 uint32_t sobolSample(uint32_t index, uint32_t dimension) {
@@ -130,12 +182,34 @@ void owenScrambledSobolBlock(uint32_t reversedIndex, uint32_t shuffleSeed,
                              const uint32_t valueSeeds[4], uint32_t values[4]) {
   // reverseBits(shuffled index), without reversing twice.
   const uint32_t shuffled = laineKarrasPermutation(reversedIndex, shuffleSeed);
-  for (uint32_t d = 0; d < 4; ++d) {
-    const auto& t = kReversedByteTables[d];
-    const uint32_t reversedValue = t[0][shuffled & 0xffu] ^ t[1][(shuffled >> 8) & 0xffu] ^
-                                   t[2][(shuffled >> 16) & 0xffu] ^ t[3][shuffled >> 24];
-    values[d] = reverseBits(laineKarrasPermutation(reversedValue, valueSeeds[d]));
-  }
+  for (uint32_t d = 0; d < 4; ++d)
+    values[d] =
+        reverseBits(laineKarrasPermutation(reversedSobolCoordinate(d, shuffled), valueSeeds[d]));
+}
+
+void owenScrambledSobolFloats8Portable(uint32_t reversedIndex, const uint32_t shuffleSeeds[2],
+                                       const uint32_t valueSeeds[8], float values[8]) {
+  sobolFloats8(reversedIndex, shuffleSeeds, valueSeeds, values);
+}
+
+__attribute__((target("avx2"))) void owenScrambledSobolFloats8Avx2(uint32_t reversedIndex,
+                                                                   const uint32_t shuffleSeeds[2],
+                                                                   const uint32_t valueSeeds[8],
+                                                                   float values[8]) {
+  sobolFloats8(reversedIndex, shuffleSeeds, valueSeeds, values);
+}
+
+bool processorHasAvx2() {
+  __builtin_cpu_init();  // (needed only before main, harmless after)
+  return __builtin_cpu_supports("avx2");
+}
+
+void owenScrambledSobolFloats8(uint32_t reversedIndex, const uint32_t shuffleSeeds[2],
+                               const uint32_t valueSeeds[8], float values[8]) {
+  // Chosen on the first call.
+  static const auto version =
+      processorHasAvx2() ? owenScrambledSobolFloats8Avx2 : owenScrambledSobolFloats8Portable;
+  version(reversedIndex, shuffleSeeds, valueSeeds, values);
 }
 
 }  // namespace pathway
