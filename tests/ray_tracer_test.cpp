@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <utility>
+#include <vector>
 
 #include "sampling/pcg32.h"
 #include "scene/camera.h"
@@ -49,6 +52,73 @@ TEST(RayTracer, OpenPlaneHasNoSelfIntersectionAtAnyScaleOrOffset) {
       EXPECT_EQ(counters.shadow, static_cast<uint64_t>(hits));
     }
   }
+}
+
+// Watertightness: a ray aimed exactly at a shared edge must hit one of the two triangles there,
+// not slip between them. A tilted, jittered grid of triangles (no coordinate aligned with an
+// axis), rays from random points above it aimed at random points on its inner edges and at its
+// inner vertices. Measured with this test: without Embree's robust mode 5.5 % of the edge rays
+// and 18 % of the vertex rays miss (in a closed room, light would leak through every seam); with
+// it no edge ray misses, and 0.4 % of the vertex rays still do: Embree 3's robust test is not
+// watertight where six triangles meet at a point (embree issue #387). A random ray meets a vertex
+// with probability zero, so only rays aimed at vertices see it.
+TEST(RayTracer, RaysAimedAtSharedEdgesAlwaysHitAndAtVerticesNearlyAlways) {
+  constexpr int kCells = 16;
+  Scene scene;
+  scene.sourcePath = "jittered grid (test)";
+  Mesh mesh;
+  mesh.name = "grid";
+  Pcg32 rng(7);
+  const glm::mat3 tilt =
+      glm::mat3(glm::rotate(glm::mat4(1.0f), 0.37f, glm::normalize(Vec3(1, 2, 3))));
+  for (int j = 0; j <= kCells; ++j)
+    for (int i = 0; i <= kCells; ++i) {
+      const bool border = i == 0 || j == 0 || i == kCells || j == kCells;
+      const Vec2 jitter = border ? Vec2(0.0f) : Vec2(rng.nextFloat(), rng.nextFloat()) - 0.5f;
+      mesh.positions.push_back(tilt *
+                               Vec3(float(i) + 0.4f * jitter.x, 0.0f, float(j) + 0.4f * jitter.y));
+    }
+  auto vertex = [](int i, int j) { return static_cast<uint32_t>(j * (kCells + 1) + i); };
+  for (int j = 0; j < kCells; ++j)
+    for (int i = 0; i < kCells; ++i) {
+      mesh.triangles.emplace_back(vertex(i, j), vertex(i, j + 1), vertex(i + 1, j + 1));
+      mesh.triangles.emplace_back(vertex(i, j), vertex(i + 1, j + 1), vertex(i + 1, j));
+    }
+  // Inner edges (each shared by two triangles) as vertex pairs: along i, along j, diagonal.
+  std::vector<std::pair<uint32_t, uint32_t>> innerEdges;
+  for (int j = 1; j < kCells; ++j)
+    for (int i = 0; i < kCells; ++i) innerEdges.emplace_back(vertex(i, j), vertex(i + 1, j));
+  for (int j = 0; j < kCells; ++j)
+    for (int i = 1; i < kCells; ++i) innerEdges.emplace_back(vertex(i, j), vertex(i, j + 1));
+  for (int j = 0; j < kCells; ++j)
+    for (int i = 0; i < kCells; ++i) innerEdges.emplace_back(vertex(i, j), vertex(i + 1, j + 1));
+  scene.meshes.push_back(mesh);
+  test::finishScene(scene);
+  const RayTracer tracer(scene);
+
+  const Vec3 up = tilt * Vec3(0, 1, 0);
+  RayCounters counters;
+  auto hits = [&](const Vec3& target) {
+    const Vec3 origin = tilt * Vec3(kCells * rng.nextFloat(), 0.0f, kCells * rng.nextFloat()) +
+                        (0.5f + 4.0f * rng.nextFloat()) * up;
+    const Ray ray{origin, glm::normalize(target - origin)};
+    return tracer.intersect(ray, RayKind::Primary, counters).has_value();
+  };
+  int edgeRays = 0, edgeMisses = 0, vertexRays = 0, vertexMisses = 0;
+  for (int round = 0; round < 40; ++round) {
+    for (const auto& [a, b] : innerEdges) {
+      const float t = rng.nextFloat();
+      ++edgeRays;
+      if (!hits(mesh.positions[a] + t * (mesh.positions[b] - mesh.positions[a]))) ++edgeMisses;
+    }
+    for (int j = 1; j < kCells; ++j)
+      for (int i = 1; i < kCells; ++i) {
+        ++vertexRays;
+        if (!hits(mesh.positions[vertex(i, j)])) ++vertexMisses;
+      }
+  }
+  EXPECT_EQ(edgeMisses, 0) << "of " << edgeRays << " rays aimed at shared edges";
+  EXPECT_LT(vertexMisses, vertexRays / 100) << "of " << vertexRays << " rays aimed at vertices";
 }
 
 TEST(RayTracer, ReportsFaceSideNormalAlbedoAndOneSidedEmission) {
