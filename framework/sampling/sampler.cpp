@@ -26,15 +26,20 @@ uint32_t sobolShuffleSeed(uint64_t pixelKey, uint32_t dimension) {
   return static_cast<uint32_t>(hashCombine(pixelKey ^ kIndexShuffleSalt, dimension / 4));
 }
 
-// Dimensions firstDimension .. + 3 (one block of four) of sample `index`, as 32-bit fractions.
-void sobolBlock(uint64_t pixelKey, uint32_t index, uint32_t firstDimension, uint32_t values[4]) {
-  // One hash per pair of dimensions gives both of their value seeds (its low and high halves).
-  uint32_t seeds[4];
-  for (uint32_t d = 0; d < 4; d += 2) {
+// The value-scramble seeds of dimensions firstDimension .. + count - 1 (count even): one hash
+// per pair of dimensions gives both (its low and high halves).
+void sobolValueSeeds(uint64_t pixelKey, uint32_t firstDimension, uint32_t count, uint32_t seeds[]) {
+  for (uint32_t d = 0; d < count; d += 2) {
     const uint64_t bits = hashCombine(pixelKey ^ kValueScrambleSalt, (firstDimension + d) / 2);
     seeds[d] = static_cast<uint32_t>(bits);
     seeds[d + 1] = static_cast<uint32_t>(bits >> 32);
   }
+}
+
+// Dimensions firstDimension .. + 3 (one block of four) of sample `index`, as 32-bit fractions.
+void sobolBlock(uint64_t pixelKey, uint32_t index, uint32_t firstDimension, uint32_t values[4]) {
+  uint32_t seeds[4];
+  sobolValueSeeds(pixelKey, firstDimension, 4, seeds);
   owenScrambledSobolBlock(reverseBits(index), sobolShuffleSeed(pixelKey, firstDimension), seeds,
                           values);
 }
@@ -156,17 +161,13 @@ Vec2 Sampler::get2D(uint64_t pixelKey, uint32_t index, uint32_t dimension) const
 void Sampler::getBlock(uint64_t pixelKey, uint32_t index, uint32_t firstDimension, uint32_t count,
                        float values[]) const {
   if (type_ == SamplerType::Sobol) {
-    // One 4D Sobol' point per four dimensions; with eight, the two are independent work that
-    // the processor overlaps.
+    // One 4D Sobol' point per four dimensions; eight are two points, scrambled side by side in
+    // vector lanes.
     if (count == kMaxBlockDimensions) {
-      uint32_t shuffleSeeds[2], valueSeeds[kMaxBlockDimensions];
-      for (uint32_t block = 0; block < 2; ++block)
-        shuffleSeeds[block] = sobolShuffleSeed(pixelKey, firstDimension + 4 * block);
-      for (uint32_t d = 0; d < count; d += 2) {
-        const uint64_t bits = hashCombine(pixelKey ^ kValueScrambleSalt, (firstDimension + d) / 2);
-        valueSeeds[d] = static_cast<uint32_t>(bits);
-        valueSeeds[d + 1] = static_cast<uint32_t>(bits >> 32);
-      }
+      const uint32_t shuffleSeeds[2] = {sobolShuffleSeed(pixelKey, firstDimension),
+                                        sobolShuffleSeed(pixelKey, firstDimension + 4)};
+      uint32_t valueSeeds[kMaxBlockDimensions];
+      sobolValueSeeds(pixelKey, firstDimension, count, valueSeeds);
       owenScrambledSobolFloats8(reverseBits(index), shuffleSeeds, valueSeeds, values);
       return;
     }

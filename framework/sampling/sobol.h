@@ -43,7 +43,7 @@ void owenScrambledSobolBlock(uint32_t reversedIndex, uint32_t shuffleSeed,
 // The same for two blocks at once, dimensions 0..3 of block 0 (shuffleSeeds[0], valueSeeds[0..3])
 // then those of block 1 (shuffleSeeds[1], valueSeeds[4..7]), turned into floats as toUnitFloat
 // does. The eight scrambles and bit reversals run side by side in vector registers (AVX2 where the
-// processor has it, chosen when the program starts): the scalar path spent its time there.
+// processor has it, chosen on the first call): the scalar path spent its time there.
 void owenScrambledSobolFloats8(uint32_t reversedIndex, const uint32_t shuffleSeeds[2],
                                const uint32_t valueSeeds[8], float values[8]);
 // Its two versions, for the tests: any x86-64 processor, and one with AVX2 (call it only where
