@@ -54,6 +54,41 @@ const bool registered = registerIntegrator(
      SamplerType::Independent,
      [](const IntegratorSetup&) { return std::make_unique<DiffuseBounceIntegrator>(); }});
 
+// The same rays sixteen at a time through rtcIntersect16, Embree's packet traversal: what a
+// renderer that traced many paths' rays together (a wavefront renderer) could gain over single
+// rays. Returns the best seconds of `repeats`.
+double packetSeconds(RTCScene scene, const std::vector<Ray>& rays, int repeats) {
+  constexpr size_t kLanes = 16;
+  std::vector<float> sink(rays.size());
+  return bestSeconds(repeats, [&] {
+    const size_t packets = (rays.size() + kLanes - 1) / kLanes;
+    tbb::parallel_for(size_t(0), packets, [&](size_t packet) {
+      RTCIntersectContext context;
+      rtcInitIntersectContext(&context);
+      alignas(64) RTCRayHit16 rayHit;
+      alignas(64) int valid[kLanes];
+      const size_t first = packet * kLanes, count = std::min(kLanes, rays.size() - first);
+      for (size_t lane = 0; lane < kLanes; ++lane) {
+        valid[lane] = lane < count ? -1 : 0;
+        const Ray& ray = rays[first + std::min(lane, count - 1)];
+        rayHit.ray.org_x[lane] = ray.origin.x, rayHit.ray.org_y[lane] = ray.origin.y;
+        rayHit.ray.org_z[lane] = ray.origin.z;
+        rayHit.ray.dir_x[lane] = ray.direction.x, rayHit.ray.dir_y[lane] = ray.direction.y;
+        rayHit.ray.dir_z[lane] = ray.direction.z;
+        rayHit.ray.tnear[lane] = 0.0f, rayHit.ray.tfar[lane] = ray.tMax;
+        rayHit.ray.time[lane] = 0.0f, rayHit.ray.mask[lane] = 0xFFFFFFFFu;
+        rayHit.ray.id[lane] = 0, rayHit.ray.flags[lane] = 0;
+        rayHit.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+        rayHit.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
+      }
+      rtcIntersect16(valid, scene, &context, &rayHit);
+      for (size_t lane = 0; lane < count; ++lane)
+        sink[first + lane] =
+            rayHit.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID ? kInfinity : rayHit.ray.tfar[lane];
+    });
+  });
+}
+
 int benchRays(const std::string& scenePath, int width, int repeats) {
   const Scene scene = loadScene(scenePath);
   const RayTracer tracer(scene);
@@ -108,6 +143,10 @@ int benchRays(const std::string& scenePath, int width, int repeats) {
       (rays.primary.size() + rays.incoherent.size()) / (rawPrimary + rawBounce) * 1e-6;
   row("camera + bounce: raw Embree (same mix)", rawMix, rawMix);
   row("camera + bounce: renderer (bench-bounce)", rate(rendererBounceRays, rendererBounce), rawMix);
+  row("primary: raw Embree rtcIntersect16",
+      rate(rays.primary.size(), packetSeconds(raw.handle(), rays.primary, repeats)), rawP);
+  row("diffuse bounce: raw Embree rtcIntersect16",
+      rate(rays.incoherent.size(), packetSeconds(raw.handle(), rays.incoherent, repeats)), rawB);
 
   // What the BVH flags cost. Pathway always traces robustly (rays through shared edges never
   // slip between triangles: the closed-furnace and watertightness tests need it); it builds
