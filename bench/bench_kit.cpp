@@ -83,7 +83,12 @@ PassTimer::~PassTimer() = default;
 double PassTimer::timePass() {
   Renderer& renderer = session_->renderer();
   const uint64_t before = renderer.stats().counters.totalRays();
-  const double seconds = secondsOf([&] { renderer.renderPass(); });
+  // The pass and its merge into the film, as the viewer pays for every pass (a render to a file
+  // merges once, at the end).
+  const double seconds = secondsOf([&] {
+    renderer.renderPass();
+    renderer.film();
+  });
   raysPerPass_ = renderer.stats().counters.totalRays() - before;
   return seconds;
 }

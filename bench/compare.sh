@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # Before and after: every stage rendered by the program at an earlier commit and by the working
-# tree, in turns, so both see the same machine load. Prints each stage's mean user CPU seconds
-# and wall seconds, and after / before. CPU time is the steadier figure on a busy machine.
+# tree, in turns (ABBA, so neither always goes first), so both see the same machine load. Prints
+# each stage's mean user CPU seconds and wall seconds, and after / before. User CPU time is the
+# steadier figure on a busy machine.
 # Usage: bench/compare.sh REV [RUNS]   (REV: any commit, e.g. HEAD~1; RUNS: per stage, default 5)
+# The earlier program stays in build/compare/<commit> for the next comparison; remove it with
+# `git worktree remove --force build/compare/<commit>`.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 rev=${1:?usage: bench/compare.sh REV [RUNS]}
@@ -16,8 +19,8 @@ if ! [[ $runs =~ ^[1-9][0-9]*$ ]]; then
   exit 2
 fi
 
-# The earlier program, built once per commit in a worktree of its own and kept for the next
-# comparison (it finds its scenes and image module there): build/compare/<commit>.
+# The earlier program, built once per commit in a worktree of its own (its build refers to files
+# of its own tree, such as the image-file module) and kept: build/compare/<commit>.
 sources=build/compare/$commit
 before=$sources/build/release/pathway
 if [[ ! -x $before ]]; then
@@ -26,9 +29,13 @@ if [[ ! -x $before ]]; then
   git worktree prune
   git worktree add --detach --force "$sources" "$commit" >/dev/null
   # The same preset as the working tree's program: the viewer's libraries alone change start-up.
-  (cd "$sources" && cmake --preset release >/dev/null &&
-    cmake --build --preset release --target pathway >/dev/null)
+  if ! (cd "$sources" && cmake --preset release >/dev/null &&
+    cmake --build --preset release --target pathway >/dev/null); then
+    echo "bench/compare.sh: building $rev ($commit) in $sources failed" >&2
+    exit 1
+  fi
 fi
+scripts/build release >/dev/null  # the working tree's program, up to date
 after=build/release/pathway
 
 scene=scenes/cornell_box.gltf
@@ -42,7 +49,9 @@ TIMEFORMAT='%U %R'
 for stage in stage1@ref stage2@ref stage3@ref stage4@ref stage5@ref; do
   : >"$out/times"
   for ((i = 0; i < runs; ++i)); do
-    for side in before after; do
+    order="before after"
+    ((i % 2 == 1)) && order="after before"
+    for side in $order; do
       program=$before
       [[ $side == after ]] && program=$after
       # bash's `time` keyword: no extra package; its report goes to stderr of the group.

@@ -5,6 +5,8 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
+
 #include "core/error.h"
 #include "scene/ray_tracer.h"
 #include "scene/scene.h"
@@ -57,6 +59,32 @@ class RawEmbree {
     rtcOccluded1(scene_, &context, &r);
     return r.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
   }
+  // Up to 16 rays at once through rtcIntersect16, Embree's packet traversal: their distances as
+  // intersect() gives them.
+  void intersect16(const Ray* rays, size_t count, float* distances) const {
+    constexpr size_t kLanes = 16;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    alignas(64) RTCRayHit16 packet;
+    alignas(64) int valid[kLanes];
+    for (size_t lane = 0; lane < kLanes; ++lane) {
+      valid[lane] = lane < count ? -1 : 0;  // -1: a ray to trace
+      const RTCRay r = toEmbree(rays[std::min(lane, count - 1)]);
+      packet.ray.org_x[lane] = r.org_x, packet.ray.org_y[lane] = r.org_y;
+      packet.ray.org_z[lane] = r.org_z, packet.ray.dir_x[lane] = r.dir_x;
+      packet.ray.dir_y[lane] = r.dir_y, packet.ray.dir_z[lane] = r.dir_z;
+      packet.ray.tnear[lane] = r.tnear, packet.ray.tfar[lane] = r.tfar;
+      packet.ray.time[lane] = r.time, packet.ray.mask[lane] = r.mask;
+      packet.ray.id[lane] = r.id, packet.ray.flags[lane] = r.flags;
+      packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+      packet.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
+    }
+    rtcIntersect16(valid, scene_, &context, &packet);
+    for (size_t lane = 0; lane < count; ++lane)
+      distances[lane] =
+          packet.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID ? kInfinity : packet.ray.tfar[lane];
+  }
+
   // For code that needs the whole hit record (geometry, primitive, u, v, Ng), such as the raw
   // path tracer: it calls rtcIntersect1/rtcOccluded1 on this BVH itself.
   RTCScene handle() const { return scene_; }

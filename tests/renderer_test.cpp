@@ -42,10 +42,25 @@ TEST(Renderer, SameSeedGivesBitIdenticalImagesForOneAndManyThreads) {
   PATHWAY_REQUIRE_SOLUTIONS();
   const Scene scene = test::boxRoom();
   const RayTracer tracer(scene);
+  // As the viewer renders: with a cancel flag (never set), so the film is merged before every
+  // pass instead of once at the end (runRender).
+  auto renderCancellable = [&](const RenderRecipe& recipe) {
+    const Camera camera(scene, recipe.settings.width, recipe.settings.height);
+    RenderSession session(tracer, camera, recipe);
+    const std::atomic<bool> never{false};
+    session.renderer().renderAll({}, &never);
+    return session.develop({});
+  };
   for (SamplerType sampler :
        {SamplerType::Independent, SamplerType::Stratified, SamplerType::Sobol}) {
     const RenderResult one = runRender(tracer, smallRecipe(1, sampler));
+    const RenderResult oneCancellable = renderCancellable(smallRecipe(1, sampler));
     for (int threads : {2, 3, 8}) {
+      const RenderResult manyCancellable = renderCancellable(smallRecipe(threads, sampler));
+      EXPECT_EQ(0, std::memcmp(oneCancellable.images.color.pixels.data(),
+                               manyCancellable.images.color.pixels.data(),
+                               oneCancellable.images.color.pixels.size() * sizeof(Color)))
+          << samplerTypeName(sampler) << " with " << threads << " threads, cancellable passes";
       const RenderResult many = runRender(tracer, smallRecipe(threads, sampler));
       ASSERT_EQ(one.images.color.pixels.size(), many.images.color.pixels.size());
       EXPECT_EQ(0, std::memcmp(one.images.color.pixels.data(), many.images.color.pixels.data(),
@@ -157,6 +172,49 @@ TEST(Renderer, CancelledPassLeavesTheFilmUntouched) {
   EXPECT_EQ(renderer.stats().samplesPerPixel, 2u);
   EXPECT_TRUE(sameFilm());
   EXPECT_FALSE(renderer.finished());
+}
+
+// Sets the cancel flag in the middle of a pass, after `samplesBeforeCancel` calls in all.
+class CancellingIntegrator : public Integrator {
+ public:
+  CancellingIntegrator(std::atomic<bool>& cancel, int samplesBeforeCancel)
+      : cancel_(cancel), left_(samplesBeforeCancel) {}
+  Color Li(const Ray&, SampleStream& samples, const RenderContext&) const override {
+    if (--left_ == 0) cancel_ = true;
+    return Color(samples.next1D());
+  }
+
+ private:
+  std::atomic<bool>& cancel_;
+  mutable std::atomic<int> left_;
+};
+
+// A pass cancelled part-way has splatted some samples into the blocks already: they must go,
+// and the earlier, unmerged pass must stay; the pass after it must find clean blocks. Σw tells
+// (and the colour: the integrator returns random values, not a constant).
+TEST(Renderer, PassCancelledPartWayDropsItsSamplesOnly) {
+  PATHWAY_REQUIRE_SOLUTIONS();
+  const Scene scene = test::boxRoom();
+  const RayTracer tracer(scene);
+  const Camera camera(scene, 64, 64);
+  RenderSettings settings;
+  settings.width = settings.height = 64;
+  settings.samplesPerPixel = 4;
+  std::atomic<bool> cancel{false}, neverSet{false};
+  const int samplesPerPass = 64 * 64;
+  const CancellingIntegrator cancelling(cancel, samplesPerPass + samplesPerPass / 3);
+  const CancellingIntegrator plain(neverSet, -1);
+  Renderer renderer(tracer, camera, cancelling, test::stage1UnderTest(), settings);
+  Renderer twin(tracer, camera, plain, test::stage1UnderTest(), settings);
+  ASSERT_TRUE(renderer.renderPass() && twin.renderPass());  // not merged yet
+  EXPECT_FALSE(renderer.renderPass(&cancel));               // cancelled a third of the way
+  EXPECT_EQ(renderer.stats().samplesPerPixel, 1u);
+  ASSERT_TRUE(renderer.renderPass() && twin.renderPass());  // the second sample, on both
+  for (const auto& [expected, actual] :
+       {std::pair{twin.film().weights(), renderer.film().weights()},
+        std::pair{twin.film().develop(), renderer.film().develop()}})
+    EXPECT_EQ(0, std::memcmp(expected.pixels.data(), actual.pixels.data(),
+                             expected.pixels.size() * sizeof(Color)));
 }
 
 TEST(Renderer, CancelStopsAPassOfManySamplesPerPixelPromptly) {

@@ -61,7 +61,7 @@ int run(const RenderOptions& options, const LaunchClock& clock) {
     throw PathwayError("--samples '" + options.samples +
                        "': expected A:B with A < B (sample indices)");
   s.check();
-  // Sixteen passes keep the progress bar moving; more would only add merge work.
+  // Sixteen passes keep the progress bar moving; more would only add per-pass overhead.
   s.samplesPerPass = std::max(1u, s.samplesToRender() / 16);
   for (const std::string& output : options.outputs) checkImagePath(output);
 

@@ -79,7 +79,7 @@ RenderSession::RenderSession(const RayTracer& tracer, const Camera& camera,
 
 RenderSession::~RenderSession() = default;
 
-RenderResult RenderSession::develop(std::vector<TodoRecord> todos) const {
+RenderResult RenderSession::develop(std::vector<TodoRecord> todos) {
   RenderResult result;
   const Film& film = renderer_->film();
   film.developAll(result.images.color, result.images.variance, result.images.weight,

@@ -52,7 +52,7 @@ class RenderSession {
 
   // The film so far, developed, with counters and "pathway:*" metadata (`todos`: the unfinished
   // stage code that ran, which the metadata counts).
-  RenderResult develop(std::vector<TodoRecord> todos) const;
+  RenderResult develop(std::vector<TodoRecord> todos);  // (merges the renderer's film)
 
  private:
   const RayTracer& tracer_;

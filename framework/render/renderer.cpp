@@ -13,7 +13,7 @@ namespace pathway {
 struct Renderer::Tile {
   int x0, y0, x1, y1;  // the pixels whose samples this tile draws
   int mergeClass;      // tiles of one class never overlap, so a class merges in parallel
-  FilmBlock block;     // the tile plus the filter's reach
+  FilmBlock block;     // the tile plus the filter's reach: finished passes' sums until merged
   RayCounters counters;
   std::vector<uint64_t> rays;  // per pixel of the tile, this pass
 };
@@ -70,7 +70,7 @@ Renderer::~Renderer() = default;
 
 void Renderer::renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount,
                           const std::atomic<bool>* cancel) {
-  tile.counters = RayCounters{};  // (the block is empty: the last merge left it so)
+  tile.counters = RayCounters{};  // this pass's (the block adds to what earlier passes left)
   const RenderContext context(tracer_, tile.counters);
   uint64_t* pixelRays = tile.rays.data();
   // How many numbers the previous sample drew predicts the next one's (SampleStream).

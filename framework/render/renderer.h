@@ -49,7 +49,8 @@ class Renderer {
   bool renderAll(const std::function<void(const RenderStats&)>& onPass = {},
                  const std::atomic<bool>* cancel = nullptr);
 
-  // The sums of every finished pass (merging what the blocks still hold).
+  // The sums of every finished pass: merges what the blocks still hold, so it changes the
+  // renderer and must not run while a pass does.
   const Film& film();
   // Rays traced for the samples of each pixel so far (rows top to bottom), for ray heatmaps.
   const std::vector<uint64_t>& raysPerPixel() const { return raysPerPixel_; }

@@ -1,6 +1,7 @@
 #include "sampling/sampler.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <iterator>
 
@@ -171,6 +172,7 @@ void Sampler::getBlock(uint64_t pixelKey, uint32_t index, uint32_t firstDimensio
       owenScrambledSobolFloats8(reverseBits(index), shuffleSeeds, valueSeeds, values);
       return;
     }
+    assert(count == kMinBlockDimensions);
     uint32_t bits[kMinBlockDimensions];
     sobolBlock(pixelKey, index, firstDimension, bits);
     for (uint32_t d = 0; d < count; ++d) values[d] = toUnitFloat(bits[d]);

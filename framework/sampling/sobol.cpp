@@ -79,8 +79,9 @@ constexpr uint32_t reverseBitsConstexpr(uint32_t x) {
 }
 
 // The first four dimensions (all the sampler draws from: it pads in blocks of four) also as
-// byte tables for the Owen-scrambled path (owenScrambledSobolBlock): the product with one byte of
-// the index is one lookup, so a point costs four lookups instead of a loop over 32 index bits.
+// byte tables for the Owen-scrambled paths (owenScrambledSobolBlock, owenScrambledSobolFloats8):
+// the product with one byte of the index is one lookup, so a point costs four lookups instead of
+// a loop over 32 index bits.
 // Both ends are bit-reversed: the input byte is a byte of the reversed index (its bit j is index
 // bit 31 - j), the output is the reversed coordinate. 16 KiB, built by the compiler as well.
 using ByteTables = std::array<std::array<std::array<uint32_t, 256>, 4>, 4>;  // [dim][byte][value]
@@ -102,12 +103,11 @@ constexpr ByteTables kReversedByteTables = buildReversedByteTables();
 // bits upwards: bit j of the result depends on bits 0..j of the input alone. That makes it a
 // bijection, and, applied to reversed bits, a scramble in which each bit depends only on the
 // bits above it.
+constexpr uint32_t kLaineKarrasMultipliers[] = {0x6c50b47cu, 0xb82f1e52u, 0xc7afe638u, 0x8d22f6e6u};
+
 uint32_t laineKarrasPermutation(uint32_t x, uint32_t seed) {
   x += seed;
-  x ^= x * 0x6c50b47cu;
-  x ^= x * 0xb82f1e52u;
-  x ^= x * 0xc7afe638u;
-  x ^= x * 0x8d22f6e6u;
+  for (uint32_t multiplier : kLaineKarrasMultipliers) x ^= x * multiplier;
   return x;
 }
 
@@ -123,17 +123,15 @@ typedef uint32_t U32x8 __attribute__((vector_size(32)));
 typedef int32_t I32x8 __attribute__((vector_size(32)));
 typedef float F32x8 __attribute__((vector_size(32)));
 
-// laineKarrasPermutation and reverseBits, lane by lane, in place. (By reference: passing 32-byte
-// vectors by value would depend on whether the caller was compiled for AVX.)
-void laineKarrasPermute(U32x8& x, const U32x8& seed) {
+// laineKarrasPermutation and reverseBits on eight lanes, in place. (By reference: passing 32-byte
+// vectors by value would depend on whether the caller was compiled for AVX. Always inlined: they
+// take the instruction set of the version they are inlined into.)
+[[gnu::always_inline]] inline void laineKarrasPermutation8(U32x8& x, const U32x8& seed) {
   x += seed;
-  x ^= x * 0x6c50b47cu;
-  x ^= x * 0xb82f1e52u;
-  x ^= x * 0xc7afe638u;
-  x ^= x * 0x8d22f6e6u;
+  for (uint32_t multiplier : kLaineKarrasMultipliers) x ^= x * multiplier;
 }
 
-void reverseBitsInPlace(U32x8& x) {
+[[gnu::always_inline]] inline void reverseBits8(U32x8& x) {
   x = (x << 16) | (x >> 16);
   x = ((x & 0x00ff00ffu) << 8) | ((x & 0xff00ff00u) >> 8);
   x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
@@ -155,10 +153,12 @@ void reverseBitsInPlace(U32x8& x) {
                 reversedSobolCoordinate(2, shuffled1), reversedSobolCoordinate(3, shuffled1)};
   U32x8 seeds;
   std::memcpy(&seeds, valueSeeds, sizeof seeds);
-  laineKarrasPermute(bits, seeds);
-  reverseBitsInPlace(bits);
-  // toUnitFloat: the top 24 bits, exact in a float and in a signed int.
-  const F32x8 unit = __builtin_convertvector(reinterpret_cast<I32x8>(bits >> 8), F32x8) * 0x1p-24f;
+  laineKarrasPermutation8(bits, seeds);
+  reverseBits8(bits);
+  // toUnitFloat: the top 24 bits, exact in a float and in a signed int (whose conversion to float
+  // is one instruction; the unsigned one is not).
+  const I32x8 top24 = __builtin_convertvector(bits >> 8, I32x8);
+  const F32x8 unit = __builtin_convertvector(top24, F32x8) * 0x1p-24f;
   std::memcpy(values, &unit, sizeof unit);
 }
 
@@ -192,16 +192,27 @@ void owenScrambledSobolFloats8Portable(uint32_t reversedIndex, const uint32_t sh
   sobolFloats8(reversedIndex, shuffleSeeds, valueSeeds, values);
 }
 
-__attribute__((target("avx2"))) void owenScrambledSobolFloats8Avx2(uint32_t reversedIndex,
-                                                                   const uint32_t shuffleSeeds[2],
-                                                                   const uint32_t valueSeeds[8],
-                                                                   float values[8]) {
+// x86 processors with AVX2 get a version of their own; on other processors it is the portable one.
+#if defined(__x86_64__) || defined(__i386__)
+#define PATHWAY_TARGET_AVX2 __attribute__((target("avx2")))
+#else
+#define PATHWAY_TARGET_AVX2
+#endif
+
+PATHWAY_TARGET_AVX2 void owenScrambledSobolFloats8Avx2(uint32_t reversedIndex,
+                                                       const uint32_t shuffleSeeds[2],
+                                                       const uint32_t valueSeeds[8],
+                                                       float values[8]) {
   sobolFloats8(reversedIndex, shuffleSeeds, valueSeeds, values);
 }
 
 bool processorHasAvx2() {
+#if defined(__x86_64__) || defined(__i386__)
   __builtin_cpu_init();  // (needed only before main, harmless after)
   return __builtin_cpu_supports("avx2");
+#else
+  return false;
+#endif
 }
 
 void owenScrambledSobolFloats8(uint32_t reversedIndex, const uint32_t shuffleSeeds[2],

@@ -46,8 +46,8 @@ void owenScrambledSobolBlock(uint32_t reversedIndex, uint32_t shuffleSeed,
 // processor has it, chosen on the first call): the scalar path spent its time there.
 void owenScrambledSobolFloats8(uint32_t reversedIndex, const uint32_t shuffleSeeds[2],
                                const uint32_t valueSeeds[8], float values[8]);
-// Its two versions, for the tests: any x86-64 processor, and one with AVX2 (call it only where
-// processorHasAvx2()).
+// Its two versions, for the tests: any processor, and an x86 one with AVX2 (call it only where
+// processorHasAvx2(); elsewhere it is the portable version).
 void owenScrambledSobolFloats8Portable(uint32_t reversedIndex, const uint32_t shuffleSeeds[2],
                                        const uint32_t valueSeeds[8], float values[8]);
 void owenScrambledSobolFloats8Avx2(uint32_t reversedIndex, const uint32_t shuffleSeeds[2],
