@@ -32,6 +32,12 @@ long residentBytes() {
   return resident * sysconf(_SC_PAGESIZE);
 }
 
+double loadAverage() {
+  double load = 0.0;
+  std::ifstream("/proc/loadavg") >> load;
+  return load;
+}
+
 Vec3 cosineDirection(const Vec3& normal, float u1, float u2) {
   const float r = std::sqrt(u1), phi = 2.0f * kPi * u2;
   return Frame(normal).toWorld(Vec3(r * std::cos(phi), r * std::sin(phi), std::sqrt(1.0f - u1)));

@@ -25,6 +25,8 @@ double secondsOf(const std::function<void()>& work);
 double bestSeconds(int repeats, const std::function<void()>& work);
 
 long residentBytes();  // of this process, from /proc/self/statm
+// The one-minute load average: how busy the shared machine is (this process's threads count too).
+double loadAverage();
 
 Vec3 cosineDirection(const Vec3& normal, float u1, float u2);
 

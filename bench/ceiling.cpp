@@ -125,9 +125,12 @@ int benchCeiling(const CeilingOptions& options) {
       "ceiling: %s, %dx%d, %u spp, max-depth %d, rr-depth %d, NEE, light-pick area, %d threads\n"
       "raw: bench/raw_path_tracer.cpp on rtcIntersect1/rtcOccluded1, all spp per pixel at once;\n"
       "framework: stage5@ref through RenderSession, %u spp per pass (as `pathway render`);\n"
-      "seconds: the whole render to an image, best of %d, raw and framework in turns\n\n",
+      "seconds: the whole render to an image, best of %d, raw and framework in turns\n"
+      "load average %.2f at the start (other processes lower the framework's ratio more than the\n"
+      "raw tracer's: compare runs made at similar load)\n\n",
       options.scene.c_str(), width, height, spp, rawSettings.maxDepth, rawSettings.rouletteDepth,
-      tbb::info::default_concurrency(), recipe.settings.samplesPerPass, options.repeats);
+      tbb::info::default_concurrency(), recipe.settings.samplesPerPass, options.repeats,
+      loadAverage());
   for (const Material& material : scene.materials)
     if (material.baseColorTexture >= 0) {
       std::printf("note: the raw tracer ignores textures; this scene has some\n\n");

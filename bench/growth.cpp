@@ -474,8 +474,7 @@ int benchGrowth(const GrowthOptions& options) {
   const int cores = tbb::info::default_concurrency();
   const double memoryGiB = procKilobytes("/proc/meminfo", "MemTotal:") / double(1 << 30);
   // Other processes share the machine: say how busy it was.
-  double load = 0.0;
-  std::ifstream("/proc/loadavg") >> load;
+  const double load = loadAverage();
   std::printf(
       "pathway_bench growth: %s, %d cores, %.1f GiB, load average %.2f at the start, Embree %s, "
       "%s\n",
