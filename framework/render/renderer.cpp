@@ -74,7 +74,7 @@ void Renderer::renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount
   const RenderContext context(tracer_, tile.counters);
   uint64_t* pixelRays = tile.rays.data();
   // How many numbers the previous sample drew predicts the next one's (SampleStream).
-  uint32_t firstBlockDimensions = Sampler::kMaxBlockDimensions;
+  uint32_t expectedDimensions = Sampler::kMaxBlockDimensions;
   for (int y = tile.y0; y < tile.y1; ++y) {
     for (int x = tile.x0; x < tile.x1; ++x, ++pixelRays) {
       // Checked per pixel, so even a pass of many samples per pixel stops promptly.
@@ -82,12 +82,10 @@ void Renderer::renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount
       const uint64_t raysBefore = tile.counters.totalRays();
       const uint64_t pixelKey = sampler_.pixelKey(x, y);
       for (uint32_t index = firstSample; index < firstSample + sampleCount; ++index) {
-        SampleStream samples(sampler_, pixelKey, index, firstBlockDimensions);
+        SampleStream samples(sampler_, pixelKey, index, expectedDimensions);
         const Vec2 filmPosition = Vec2(x, y) + samples.next2D();
         const Color radiance = integrator_.Li(camera_.generateRay(filmPosition), samples, context);
-        firstBlockDimensions = samples.dimension() <= Sampler::kMinBlockDimensions
-                                   ? Sampler::kMinBlockDimensions
-                                   : Sampler::kMaxBlockDimensions;
+        expectedDimensions = samples.dimension();
         if (!isFinite(radiance)) {  // counted and dropped, never written
           ++tile.counters.invalidSamples;
           continue;

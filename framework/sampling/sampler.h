@@ -60,18 +60,20 @@ class Sampler {
 // latencies overlap. A path tracer takes about eight dimensions per bounce, so blocks hold eight:
 // a bounce waits for one block, not two, and the first block (drawn before the camera ray is
 // traced) already holds the first bounce's numbers. An integrator that needs only dimensions
-// 0-3 (4D AO) would waste half of such a block, so the first block's size is the caller's guess
-// (the renderer's: what the previous sample used). The values never depend on the block sizes.
+// 0-3 (4D AO) would waste half of such a block, so the first block's size follows the caller's
+// guess of how many numbers the sample will draw (the renderer's: as many as the previous
+// sample drew). The values never depend on the block sizes.
 class SampleStream {
  public:
   // Sample `index` of the pixel whose key (Sampler::pixelKey) is `pixelKey`: the key is computed
-  // once for all of a pixel's samples. `firstBlockDimensions`: 4 or 8 (see above).
+  // once for all of a pixel's samples. `expectedDimensions`: how many numbers the sample will
+  // probably draw; up to 4 makes the first block 4 dimensions, more makes it 8 (see above).
   SampleStream(const Sampler& sampler, uint64_t pixelKey, uint32_t index,
-               uint32_t firstBlockDimensions = Sampler::kMaxBlockDimensions)
+               uint32_t expectedDimensions = Sampler::kMaxBlockDimensions)
       : sampler_(&sampler),
         pixelKey_(pixelKey),
         index_(index),
-        firstBlockDimensions_(firstBlockDimensions == Sampler::kMinBlockDimensions
+        firstBlockDimensions_(expectedDimensions <= Sampler::kMinBlockDimensions
                                   ? Sampler::kMinBlockDimensions
                                   : Sampler::kMaxBlockDimensions) {}
 
