@@ -1,8 +1,7 @@
 // The offscreen path: an OSMesa context (llvmpipe) rendering into memory, so the viewer can be
 // drawn and screenshotted with no display. ImGui's OpenGL2 backend draws here: its direct gl*
-// calls bind to libOSMesa, the only GL library pathway links (see gl_functions.h). The OpenGL3
+// calls reach libOSMesa through gl_legacy_entry_points.cpp (see gl_functions.h). The OpenGL3
 // backend cannot be used: its loader dlopens libGL, whose functions know nothing of OSMesa.
-#include <GL/osmesa.h>
 #include <backends/imgui_impl_opengl2.h>
 #include <imgui.h>
 
@@ -13,6 +12,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "viewer/osmesa_library.h"
 #include "viewer/platform.h"
 
 namespace pathway {
@@ -22,17 +22,17 @@ class OsmesaPlatform : public Platform {
  public:
   OsmesaPlatform(int width, int height)
       : width_(width), height_(height), buffer_(static_cast<size_t>(width) * height * 4) {
-    context_ = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
+    context_ = osmesa_.createContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
     if (!context_) throw PathwayError("OSMesa could not create an offscreen OpenGL context");
-    if (!OSMesaMakeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, width, height)) {
-      OSMesaDestroyContext(context_);
+    if (!osmesa_.makeCurrent(context_, buffer_.data(), GL_UNSIGNED_BYTE, width, height)) {
+      osmesa_.destroyContext(context_);
       throw PathwayError("OSMesa could not make its offscreen context current");
     }
-    gl_.load(OSMesaGetProcAddress);
+    gl_.load(osmesa_.getProcAddress);
     last_ = std::chrono::steady_clock::now();
   }
 
-  ~OsmesaPlatform() override { OSMesaDestroyContext(context_); }
+  ~OsmesaPlatform() override { osmesa_.destroyContext(context_); }
 
   const GlFunctions& gl() const override { return gl_; }
 
@@ -76,6 +76,7 @@ class OsmesaPlatform : public Platform {
   }
 
  private:
+  const OsmesaLibrary& osmesa_ = osmesaLibrary();  // first: the constructor's body uses it
   int width_, height_;
   std::vector<unsigned char> buffer_;
   OSMesaContext context_ = nullptr;

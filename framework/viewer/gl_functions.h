@@ -1,13 +1,13 @@
 // Every GL call the viewer makes itself goes through this table, filled from the current
 // context's own GetProcAddress (glfwGetProcAddress or OSMesaGetProcAddress).
 //
-// Why: libOSMesa and libGL both export the gl* entry points, and a program linking both gets one
-// of them for every direct call, whatever context is current. The viewer therefore never calls a
-// gl* symbol directly: pathway does not link libGL at all (GLFW dlopens it for its window, and
-// ImGui's OpenGL3 backend loads its functions through its own dlopen loader), and what the
-// viewer draws itself uses function pointers from the context it draws into. The only direct
-// gl* calls in the program are those of ImGui's OpenGL2 backend, used only with OSMesa, and they
-// resolve to libOSMesa because it is the only GL library linked.
+// Why: libOSMesa and libGL both export the gl* entry points, and a direct call binds to one of
+// them whatever context is current. The viewer therefore never calls a gl* symbol directly:
+// pathway links no GL library at all (GLFW dlopens libGL for its window, ImGui's OpenGL3 backend
+// loads its functions through its own dlopen loader, libOSMesa is opened by the offscreen viewer:
+// osmesa_library.h), and what the viewer draws itself uses function pointers from the context it
+// draws into. The only direct gl* calls in the program are those of ImGui's OpenGL2 backend, used
+// only with OSMesa; gl_legacy_entry_points.cpp forwards them to libOSMesa.
 #pragma once
 
 #include <GL/gl.h>  // types and enums only
