@@ -49,6 +49,25 @@ TEST(ImageFiles, ExrKeepsColourVarianceWeightLayersAndMetadata) {
   fs::remove_all(folder);
 }
 
+// Renders are written uncompressed (noise barely compresses, and ZIP took a fifth of a short
+// render's time); references, written as layers, are ZIP-compressed (converged images shrink to a
+// quarter). A flat image shows which is which by its size.
+TEST(ImageFiles, RendersAreWrittenUncompressedAndLayeredReferencesCompressed) {
+  const fs::path folder = fs::temp_directory_path() / "pathway_image_io_compression_test";
+  fs::create_directories(folder);
+  const int width = 64, height = 64;
+  const size_t floats = size_t(width) * height;  // bytes of one float channel / 4
+  Image flat(width, height);
+  for (Color& pixel : flat.pixels) pixel = Color(0.5f);
+  const std::string render = (folder / "render.exr").string();
+  writeExr(render, FilmImages{flat, flat, flat}, {});
+  EXPECT_GE(fs::file_size(render), 7 * 4 * floats);  // R, G, B, three variances, weight
+  const std::string reference = (folder / "reference.exr").string();
+  writeExrLayers(reference, {{"", &flat}, {"variance", &flat}}, {});
+  EXPECT_LT(fs::file_size(reference), 6 * 4 * floats / 10);
+  fs::remove_all(folder);
+}
+
 // The sRGB transfer function as IEC 61966-2-1 defines it, clipped to [0, 1], as an 8-bit value.
 float srgbByte(double linear) {
   const double v = std::fmin(1.0, std::fmax(0.0, linear));

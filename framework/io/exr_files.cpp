@@ -32,9 +32,7 @@ Imf::FrameBuffer interleavedFrameBuffer(const std::vector<std::string>& channels
 void writeExrRaster(const std::string& path, const RasterHeader& header, const float* pixels) {
   try {
     Imf::Header exr(header.width, header.height);
-    // Uncompressed: a rendered image's noisy floats shrink by only a fifth under ZIP, which took
-    // 35 ms for a 256x256 render (18 times the uncompressed write, and a fifth of a 4-spp render).
-    exr.compression() = Imf::NO_COMPRESSION;
+    exr.compression() = header.compressed ? Imf::ZIP_COMPRESSION : Imf::NO_COMPRESSION;
     for (const std::string& name : header.channels)
       exr.channels().insert(name, Imf::Channel(Imf::FLOAT));
     for (const auto& [key, value] : header.attributes) exr.insert(key, Imf::StringAttribute(value));

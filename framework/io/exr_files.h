@@ -9,7 +9,8 @@
 
 namespace pathway {
 
-// Float channels, uncompressed scanlines, string attributes. Throws PathwayError naming `path`.
+// Float channels, scanlines compressed as `header.compressed` says, string attributes. Throws
+// PathwayError naming `path`.
 void writeExrRaster(const std::string& path, const RasterHeader& header, const float* pixels);
 // Every float or half channel as float (unsigned ones are skipped); R, G, B first when present (EXR
 // stores channels sorted by name), then the others in the file's order; every string attribute.

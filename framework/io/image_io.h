@@ -23,8 +23,10 @@ struct FilmImages {
   Image weight;    // Σ w (same in every channel)
 };
 
+// Uncompressed (a render's noisy floats barely compress; raster.h).
 void writeExr(const std::string& path, const FilmImages& images, const ImageMetadata& metadata);
 // An EXR of RGB layers of one size: the layer named "" is R, G, B; a layer "x" is x.R, x.G, x.B.
+// ZIP-compressed: the grading references are written this way, and converged images compress.
 void writeExrLayers(const std::string& path, const std::map<std::string, const Image*>& layers,
                     const ImageMetadata& metadata);
 // `exposure` in stops: pixel values are scaled by 2^exposure before the sRGB curve.

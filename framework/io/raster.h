@@ -16,6 +16,9 @@ struct RasterHeader {
   int height = 0;
   std::vector<std::string> channels;                            // "R", "G", "B", "variance.R" ...
   std::vector<std::pair<std::string, std::string>> attributes;  // string metadata
+  // EXR only: ZIP-compressed scanlines. Worth it for converged images such as grading references
+  // (a quarter of the bytes), not for noisy renders, which shrink by a fifth in 18 times the time.
+  bool compressed = false;
 };
 
 struct Raster {

@@ -8,31 +8,14 @@
 // context. The list is what `nm -u pathway` showed when libOSMesa was linked; a function missing
 // here fails the link, and a definition whose parameters differ from GL/gl.h fails to compile.
 #include <GL/gl.h>
-#include <dlfcn.h>
 
-#include <string>
-
-#include "core/error.h"
 #include "viewer/osmesa_library.h"
 
-namespace pathway {
-namespace {
-
-template <typename Function>
-Function* osmesaGl(const char* name) {
-  auto* function = reinterpret_cast<Function*>(dlsym(osmesaLibrary().handle, name));
-  if (!function) throw PathwayError(std::string(PATHWAY_OSMESA_LIBRARY) + " has no " + name);
-  return function;
-}
-
-}  // namespace
-}  // namespace pathway
-
 // Each looks its OSMesa function up on its first call.
-#define PATHWAY_FORWARD_GL(name, params, args)                             \
-  extern "C" void name params {                                            \
-    static const auto osmesa = pathway::osmesaGl<decltype(::name)>(#name); \
-    osmesa args;                                                           \
+#define PATHWAY_FORWARD_GL(name, params, args)                                                    \
+  extern "C" void name params {                                                                   \
+    static const auto osmesa = reinterpret_cast<decltype(&::name)>(pathway::osmesaSymbol(#name)); \
+    osmesa args;                                                                                  \
   }
 
 PATHWAY_FORWARD_GL(glBindTexture, (GLenum target, GLuint texture), (target, texture))

@@ -1,8 +1,9 @@
-// libOSMesa, opened the first time the offscreen viewer needs it rather than linked.
+// libOSMesa, opened the first time the offscreen viewer (`pathway view --headless` or
+// `--benchmark`) needs it rather than linked.
 //
 // Why: libOSMesa depends on libLLVM (its llvmpipe rasteriser), and a program linked with it
-// relocated LLVM's symbols at every start, about 15 ms of every `pathway` process, a render's or
-// `--help`'s alike. Only `pathway view --headless` draws with it.
+// relocated LLVM's symbols at every start: 15-20 ms of every `pathway` process, a render's or
+// `--help`'s alike.
 #pragma once
 
 #include <GL/osmesa.h>  // types and enums only
@@ -14,11 +15,14 @@ struct OsmesaLibrary {
   decltype(&OSMesaMakeCurrent) makeCurrent = nullptr;
   decltype(&OSMesaDestroyContext) destroyContext = nullptr;
   decltype(&OSMesaGetProcAddress) getProcAddress = nullptr;
-  void* handle = nullptr;  // from dlopen, for the library's own gl* entry points
 };
 
 // Opens the library once (thread-safe) and returns its functions. Throws PathwayError naming the
 // library file when it cannot be opened or lacks one of them.
 const OsmesaLibrary& osmesaLibrary();
+
+// Any function of the library by name, such as its own glEnable (not the program's, which
+// forwards to it: gl_legacy_entry_points.cpp). Throws as osmesaLibrary() does.
+void* osmesaSymbol(const char* name);
 
 }  // namespace pathway

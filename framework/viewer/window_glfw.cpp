@@ -1,6 +1,7 @@
 // The windowed path: GLFW creates the window and its GLX context (GLFW dlopens libGL itself),
 // ImGui's GLFW backend feeds it input, and its OpenGL3 backend draws (it loads its GL functions
-// through its own dlopen loader, so it never touches the gl* symbols libOSMesa exports).
+// through its own dlopen loader, so it never calls the program's own gl* symbols, which forward to
+// libOSMesa: gl_legacy_entry_points.cpp).
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
