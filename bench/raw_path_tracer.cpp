@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "sampling/hash.h"
+#include "sampling/pcg32.h"
 #include "sampling/sampler.h"
 
 namespace pathway::bench {

@@ -18,7 +18,6 @@
 #include "core/ray_counters.h"
 #include "raw_embree.h"
 #include "render/emitter_picker.h"
-#include "sampling/pcg32.h"
 #include "scene/camera.h"
 
 namespace pathway::bench {

@@ -1,4 +1,5 @@
-// Ray queries: counters, front/back faces, and no self-intersection at any scale or offset.
+// Ray queries: counters, front/back faces, no self-intersection at any scale or offset, and rays
+// aimed at shared edges and vertices (robust traversal).
 #include "scene/ray_tracer.h"
 
 #include <gtest/gtest.h>

@@ -102,7 +102,8 @@ class Film {
   // Estimated variance of each developed pixel value (delta method for the ratio Σ w·L / Σ w).
   Image variance() const;
   Image weights() const;  // Σ w in every channel
-  // All three in one pass over the sums (what a render hands on: the viewer after every pass).
+  // All three in one pass over the sums (what a render hands on; the viewer, whenever it publishes
+  // an image).
   void developAll(Image& color, Image& variance, Image& weights,
                   size_t* unresolvedPixels = nullptr) const;
 

@@ -47,13 +47,25 @@ void sobolBlock(uint64_t pixelKey, uint32_t index, uint32_t firstDimension, uint
 
 // Independent: 64 random bits per pair of dimensions, a hash of (pixel, index, pair); the even
 // dimension takes the low half, the odd one the high half. Any dimension costs two mixing steps:
-// no generator to seed and no stepping past the dimensions before it.
-uint64_t independentPairBits(uint64_t pixelKey, uint32_t index, uint32_t dimension) {
-  return hashCombine(hashCombine(pixelKey, index), dimension / 2);
+// no generator to seed and no stepping past the dimensions before it. The first step, the
+// sample's key, is shared by all of the sample's pairs.
+uint64_t independentSampleKey(uint64_t pixelKey, uint32_t index) {
+  return hashCombine(pixelKey, index);
+}
+
+uint64_t independentPairBits(uint64_t sampleKey, uint32_t dimension) {
+  return hashCombine(sampleKey, dimension / 2);
+}
+
+// Dimensions `dimension` (even) and `dimension + 1`.
+Vec2 independentPair(uint64_t sampleKey, uint32_t dimension) {
+  const uint64_t bits = independentPairBits(sampleKey, dimension);
+  return Vec2(toUnitFloat(static_cast<uint32_t>(bits)),
+              toUnitFloat(static_cast<uint32_t>(bits >> 32)));
 }
 
 uint32_t independentBits(uint64_t pixelKey, uint32_t index, uint32_t dimension) {
-  const uint64_t bits = independentPairBits(pixelKey, index, dimension);
+  const uint64_t bits = independentPairBits(independentSampleKey(pixelKey, index), dimension);
   return static_cast<uint32_t>(dimension % 2 == 0 ? bits : bits >> 32);
 }
 
@@ -145,11 +157,8 @@ float Sampler::get(uint32_t px, uint32_t py, uint32_t index, uint32_t dimension)
 Vec2 Sampler::get2D(uint64_t pixelKey, uint32_t index, uint32_t dimension) const {
   // The same values as get(dimension) and get(dimension + 1), with the shared work done once:
   // for the independent sampler both halves of one hash.
-  if (type_ == SamplerType::Independent) {
-    const uint64_t bits = independentPairBits(pixelKey, index, dimension);
-    return Vec2(toUnitFloat(static_cast<uint32_t>(bits)),
-                toUnitFloat(static_cast<uint32_t>(bits >> 32)));
-  }
+  if (type_ == SamplerType::Independent)
+    return independentPair(independentSampleKey(pixelKey, index), dimension);
   if (type_ == SamplerType::Sobol) {
     // Both dimensions lie in one block of four.
     uint32_t values[4];
@@ -178,8 +187,13 @@ void Sampler::getBlock(uint64_t pixelKey, uint32_t index, uint32_t firstDimensio
     for (uint32_t d = 0; d < count; ++d) values[d] = toUnitFloat(bits[d]);
     return;
   }
+  // Independent: the sample's key once for all pairs of the block.
+  const uint64_t sampleKey =
+      type_ == SamplerType::Independent ? independentSampleKey(pixelKey, index) : 0;
   for (uint32_t d = 0; d < count; d += 2) {
-    const Vec2 pair = get2D(pixelKey, index, firstDimension + d);
+    const Vec2 pair = type_ == SamplerType::Independent
+                          ? independentPair(sampleKey, firstDimension + d)
+                          : get2D(pixelKey, index, firstDimension + d);
     values[d] = pair.x;
     values[d + 1] = pair.y;
   }

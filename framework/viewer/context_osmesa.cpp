@@ -76,7 +76,7 @@ class OsmesaPlatform : public Platform {
   }
 
  private:
-  const OsmesaLibrary& osmesa_ = osmesaLibrary();  // first: the constructor's body uses it
+  const OsmesaLibrary& osmesa_ = osmesaLibrary();
   int width_, height_;
   std::vector<unsigned char> buffer_;
   OSMesaContext context_ = nullptr;
