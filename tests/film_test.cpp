@@ -15,7 +15,7 @@ namespace pathway {
 namespace {
 
 TEST(Film, SplatAddsTheFilterWeightToEveryPixelInReach) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const Stage1Functions& stage1 = test::stage1UnderTest();
   for (FilterType type :
        {FilterType::Box, FilterType::Tent, FilterType::MitchellNetravali, FilterType::Gaussian}) {
@@ -56,7 +56,7 @@ TEST(Film, DevelopDividesWeightedRadianceByWeight) {
 
 // Renders a scene whose radiance is the same everywhere; the developed image must be that value.
 TEST(Film, ConstantSceneComesBackExactlyForEveryFilterAndSampleCount) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const Color constant(0.3f, 0.7f, 1.9f);
   const Scene scene = test::constantScene(constant);
   const RayTracer tracer(scene);

@@ -46,9 +46,10 @@ class Grader : public ::testing::Test {
   void SetUp() override { dir_ = test::freshTestFolder("pathway_grade"); }
   void TearDown() override { fs::remove_all(dir_); }
 
-  // Runs `pathway grade <arguments>` with its report in the test's folder.
-  test::CommandOutcome grade(const std::string& arguments) {
-    return test::runCommand(std::string(PATHWAY_BINARY) + " grade -q --report " +
+  // Runs `pathway grade <arguments>` with its report in the test's folder (`environment`:
+  // variables set for it, "NAME=value ").
+  test::CommandOutcome grade(const std::string& arguments, const std::string& environment = "") {
+    return test::runCommand(environment + PATHWAY_BINARY + " grade -q --report " +
                             (dir_ / "report").string() + " " + arguments);
   }
   std::vector<ResultLine> results() {
@@ -59,7 +60,7 @@ class Grader : public ::testing::Test {
 };
 
 TEST_F(Grader, TheReferenceStagesPassWithFreshSeeds) {
-  if (!test::kHaveSolutions) GTEST_SKIP() << "needs solutions/ (the reference stages)";
+  if (!test::haveReference()) GTEST_SKIP() << "needs the reference stages";
   const test::CommandOutcome outcome = grade("--grade-reference --seed 7");
   EXPECT_EQ(outcome.exitCode, 0) << outcome.output;
   const std::vector<ResultLine> lines = results();
@@ -82,7 +83,7 @@ TEST_F(Grader, TheReferenceStagesPassWithFreshSeeds) {
 
 TEST_F(Grader, TheUntouchedSkeletonsFailOnTheirImages) {
   // In a handout, assignments/ holds the student's own work, no longer the skeletons.
-  if (!test::kHaveSolutions) GTEST_SKIP() << "needs the untouched skeletons";
+  if (!test::kFullRepository) GTEST_SKIP() << "needs the untouched skeletons";
   for (int stage = 1; stage <= 5; ++stage) {
     const test::CommandOutcome outcome = grade("--stage " + std::to_string(stage));
     EXPECT_EQ(outcome.exitCode, 1) << outcome.output;
@@ -96,7 +97,7 @@ TEST_F(Grader, TheUntouchedSkeletonsFailOnTheirImages) {
 }
 
 TEST_F(Grader, BadInputGetsOneMessageAndAFailedResult) {
-  if (!test::kHaveSolutions) GTEST_SKIP() << "needs solutions/ (the reference stages)";
+  if (!test::haveReference()) GTEST_SKIP() << "needs the reference stages";
   // A reference folder with one reference missing, one truncated, one from another case.
   const fs::path references = dir_ / "references";
   fs::create_directories(references);
@@ -132,7 +133,7 @@ TEST_F(Grader, BadInputGetsOneMessageAndAFailedResult) {
 }
 
 TEST_F(Grader, TwoRendersCompareDirectlyThroughTheirVariances) {
-  if (!test::kHaveSolutions) GTEST_SKIP() << "needs solutions/ (the reference stages)";
+  if (!test::haveReference()) GTEST_SKIP() << "needs the reference stages";
   const std::string render = std::string(PATHWAY_BINARY) + " render " + PATHWAY_SCENES_DIR +
                              "/cornell_box.gltf -q --width 48 --height 48 -i stage2@ref --spp 8";
   const std::string a = (dir_ / "a.exr").string(), b = (dir_ / "b.exr").string(),
@@ -213,6 +214,15 @@ TEST_P(GraderMutant, IsJudgedByItsImage) {
     EXPECT_EQ(mutant.expect == "crash" ? crashed : timedOut, lines.size())
         << test::readTextFile((dir_ / "report/results.json").string());
   }
+
+  // A handout's self-grade runs on the compiled reference library (render/reference_library.h)
+  // where the autograder has the reference built in: the same verdict on every case.
+  grade("--stages-library " + mutant.library + stage + limit,
+        "PATHWAY_REFERENCE_LIBRARY=" PATHWAY_REFERENCE_LIBRARY_FILE " ");
+  const std::vector<ResultLine> handout = results();
+  ASSERT_EQ(handout.size(), lines.size());
+  for (size_t i = 0; i < lines.size(); ++i)
+    EXPECT_EQ(handout[i].status, lines[i].status) << "case " << i << ": " << handout[i].output;
 }
 
 INSTANTIATE_TEST_SUITE_P(Mutants, GraderMutant, ::testing::ValuesIn(mutants()),

@@ -70,7 +70,7 @@ double relativeDifference(double a, double b, double scale) {
 }
 
 TEST_F(PartMerge, PartsMergeIntoTheImageOfOneRender) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const Camera camera(scene_, recipe_.settings.width, recipe_.settings.height);
   RenderSession whole(tracer_, camera, recipe_);
   whole.renderer().renderAll();
@@ -146,7 +146,7 @@ std::string refusal(const std::vector<std::string>& paths, bool allowIncomplete 
 }
 
 TEST_F(PartMerge, PartsThatDoNotBelongTogetherAreRefusedByName) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const std::string a = writePart(0, 8), b = writePart(8, 16), overlapping = writePart(6, 12);
   const std::string otherSeed = writePart(8, 16, 9);
   EXPECT_NE(refusal({a, overlapping}).find("overlap"), std::string::npos);
@@ -180,7 +180,7 @@ TEST_F(PartMerge, PartsThatDoNotBelongTogetherAreRefusedByName) {
 }
 
 TEST(PartMergeCli, MergeRefusesAndWritesNothing) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const fs::path dir = test::freshTestFolder("pathway_merge_cli");
   const std::string pathway = PATHWAY_BINARY;
   const std::string scene = std::string(PATHWAY_SCENES_DIR) + "/cornell_box.gltf";

@@ -25,7 +25,7 @@ const FilterProfiles& reference() {
 }
 
 TEST(PixelFilter, ProfilesIntegrateToTheirAnalyticValues) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   EXPECT_NEAR(integrate(PixelFilter(FilterType::Box, 0.5f, reference())), 1.0, 1e-4);
   EXPECT_NEAR(integrate(PixelFilter(FilterType::Tent, 1.0f, reference())), 1.0, 1e-4);
   // Mitchell-Netravali integrates to 1 for every B, C.
@@ -37,7 +37,7 @@ TEST(PixelFilter, ProfilesIntegrateToTheirAnalyticValues) {
 }
 
 TEST(PixelFilter, ProfilesMatchTheirFormulasPointwise) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const FilterProfiles& f = reference();
   for (float x = -3.0f; x <= 3.0f; x += 0.01f) {
     const float a = std::fabs(x);
@@ -53,7 +53,7 @@ TEST(PixelFilter, ProfilesMatchTheirFormulasPointwise) {
 }
 
 TEST(PixelFilter, MitchellNetravaliHasItsNegativeLobeMinimumAt10Over7) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const FilterProfiles& f = reference();
   // d/dx of the outer cubic vanishes at |x| = 10/7, where f = -16/441 = -0.036281
   // (docs/stability.md derives it).
@@ -64,7 +64,7 @@ TEST(PixelFilter, MitchellNetravaliHasItsNegativeLobeMinimumAt10Over7) {
 }
 
 TEST(PixelFilter, SupportEndsAtTheRadiusAndScalesWithIt) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   for (FilterType type :
        {FilterType::Box, FilterType::Tent, FilterType::MitchellNetravali, FilterType::Gaussian}) {
     for (float radius : {0.5f, 1.0f, 2.5f}) {

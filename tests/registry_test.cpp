@@ -29,7 +29,7 @@ TEST(Registry, EveryStageRegistersUnderItsDeclaredNameSummaryAndParameters) {
     EXPECT_EQ(declared.name, "stage" + std::to_string(stage));
     for (Variant variant : {Variant::Student, Variant::Reference}) {
       const IntegratorInfo* info = findStageIntegrator(stage, variant);
-      if (variant == Variant::Reference && !test::kHaveSolutions) {
+      if (variant == Variant::Reference && !test::haveReference()) {
         EXPECT_EQ(info, nullptr);
         continue;
       }
@@ -142,7 +142,7 @@ TEST(StageKit, EarlierStagesComeFromTheChosenVariantAndTheStageItselfFromItsOwn)
   // The kits hand out the functions the stage files registered.
   EXPECT_NO_THROW(own.stage1());
   EXPECT_NO_THROW(own.stage2());
-  if (test::kHaveSolutions) {
+  if (test::haveReference()) {
     EXPECT_NE(own.stage1().splat, mixed.stage1().splat);
     EXPECT_NE(own.stage2().ambientOcclusionSample, mixed.stage2().ambientOcclusionSample);
   } else {

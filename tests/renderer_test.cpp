@@ -39,7 +39,7 @@ std::unique_ptr<Integrator> makeIntegrator(int stage, const Scene& scene,
 }
 
 TEST(Renderer, SameSeedGivesBitIdenticalImagesForOneAndManyThreads) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const Scene scene = test::boxRoom();
   const RayTracer tracer(scene);
   // As the viewer renders: with a cancel flag (never set), so the film is merged before every
@@ -80,7 +80,7 @@ TEST(Renderer, SameSeedGivesBitIdenticalImagesForOneAndManyThreads) {
 }
 
 TEST(Renderer, CountsOnePrimaryRayPerSample) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const Scene scene = test::boxRoom();
   const RayTracer tracer(scene);
   const RenderResult result = runRender(tracer, smallRecipe(2, SamplerType::Sobol));
@@ -94,7 +94,7 @@ TEST(Renderer, CountsOnePrimaryRayPerSample) {
 // Grading one stage in isolation: the student's stage 2 on the reference's stage 1 splats with
 // the reference's filters, so its filter weights are the reference's to the bit.
 TEST(Renderer, EarlierStagesFromTheReferenceAreTheOnesThatRun) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   if (test::checkingStudentCode()) GTEST_SKIP() << "checks the framework, not your stages";
   const Scene scene = test::boxRoom();
   const RayTracer tracer(scene);
@@ -122,7 +122,7 @@ class NaNIntegrator : public Integrator {
 };
 
 TEST(Renderer, DropsAndCountsNonFiniteSamples) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const Scene scene = test::constantScene(Color(1.0f));
   const RayTracer tracer(scene);
   const Camera camera(scene, 32, 32);
@@ -145,7 +145,7 @@ TEST(Renderer, DropsAndCountsNonFiniteSamples) {
 // a cancelled pass must drop its own samples only, whether the passes before it were merged (the
 // film was looked at) or not. `twin` renders the same passes, none cancelled.
 TEST(Renderer, CancelledPassLeavesTheFilmUntouched) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const Scene scene = test::boxRoom();
   const RayTracer tracer(scene);
   const Camera camera(scene, 32, 32);
@@ -193,7 +193,7 @@ class CancellingIntegrator : public Integrator {
 // and the earlier, unmerged pass must stay; the pass after it must find clean blocks. Σw tells
 // (and the colour: the integrator returns random values, not a constant).
 TEST(Renderer, PassCancelledPartWayDropsItsSamplesOnly) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const Scene scene = test::boxRoom();
   const RayTracer tracer(scene);
   const Camera camera(scene, 64, 64);
@@ -218,7 +218,7 @@ TEST(Renderer, PassCancelledPartWayDropsItsSamplesOnly) {
 }
 
 TEST(Renderer, CancelStopsAPassOfManySamplesPerPixelPromptly) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const Scene scene = test::boxRoom();
   const RayTracer tracer(scene);
   const Camera camera(scene, 64, 64);
@@ -241,7 +241,7 @@ TEST(Renderer, CancelStopsAPassOfManySamplesPerPixelPromptly) {
 }
 
 TEST(Renderer, CountsTheRaysOfEveryPixel) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const Scene scene = loadScene(std::string(PATHWAY_SCENES_DIR) + "/furnace_closed.gltf");
   const RayTracer tracer(scene);
   const Camera camera(scene, 40, 30);

@@ -33,7 +33,7 @@ std::string describe(const Estimate& e) {
 // ---- Ambient occlusion (stages 2 and 3) ----
 
 TEST(StageAO, OpenPlaneIsExactlyOneAtEveryScaleAndOffset) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   for (float scale : {1e-3f, 1.0f, 1e3f}) {
     for (float offset : {0.0f, 1e4f}) {
       const Scene scene = test::openPlane(scale, offset);
@@ -52,7 +52,7 @@ TEST(StageAO, OpenPlaneIsExactlyOneAtEveryScaleAndOffset) {
 }
 
 TEST(StageAO, FloorUnderACeilingIsHOverRSquared) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const Scene scene = sceneFile("ceiling.gltf");  // h = 1
   for (double r : {2.0, 4.0}) {
     for (const std::string& integrator : {test::stage(2), test::stage(3)}) {
@@ -67,7 +67,7 @@ TEST(StageAO, FloorUnderACeilingIsHOverRSquared) {
 }
 
 TEST(StageAO, FloorBesideAWallIsOneHalfAndInACornerOneQuarter) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   // The generated walls are 200 m wide: the visible points' AO exceeds the ideal by at most
   // 0.001 (wall) and 0.0015 (corner), measured by the scene generator; that is the allowance.
   struct Case {
@@ -86,7 +86,7 @@ TEST(StageAO, FloorBesideAWallIsOneHalfAndInACornerOneQuarter) {
 }
 
 TEST(StageAO, NestedAnd4DAgreeInMean) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const Scene scene = sceneFile("cornell_box.gltf");
   // Equal rays per pixel: nested 16 eye samples x (1 + 3 AO rays) = 64; 4D 32 samples x 2 = 64.
   const Estimate nested = meanOverPixels(
@@ -107,7 +107,7 @@ double truncatedFurnace(int depth) {
 }
 
 TEST(StageFurnace, NaiveRecursionMatchesTheTruncatedSeriesWithExactRayCounts) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const Scene scene = sceneFile("furnace_closed.gltf");
   struct Case {
     int branching, depth;
@@ -137,7 +137,7 @@ TEST(StageFurnace, NaiveRecursionMatchesTheTruncatedSeriesWithExactRayCounts) {
 }
 
 TEST(StageFurnace, RayBudgetRefusesAnExplodingRequestBeforeRendering) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const Scene scene = sceneFile("furnace_closed.gltf");
   const IntegratorInfo& info = findIntegrator(test::stage(4));
   const ParamValues params =
@@ -158,7 +158,7 @@ TEST(StageFurnace, RayBudgetRefusesAnExplodingRequestBeforeRendering) {
 }
 
 TEST(StageFurnace, PathTracerMatchesTruncatedAndUnlimitedSeriesWithAndWithoutNee) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const Scene scene = sceneFile("furnace_closed.gltf");
   for (const char* nee : {"0", "1"}) {
     for (int depth : {0, 1, 3}) {
@@ -184,7 +184,7 @@ TEST(StageFurnace, PathTracerMatchesTruncatedAndUnlimitedSeriesWithAndWithoutNee
 // A closed room of albedo 1 reflects everything: only Russian roulette ends a path there. The
 // depth cap is far out of reach (0.95^1000 ≈ 5e-23), so it only guards against a hang.
 TEST(StageFurnace, RouletteAloneEndsPathsInAClosedWhiteRoom) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   Scene scene = sceneFile("furnace_closed.gltf");
   for (Material& material : scene.materials) {
     material.baseColor = Color(1.0f);
@@ -209,7 +209,7 @@ TEST(StageFurnace, RouletteAloneEndsPathsInAClosedWhiteRoom) {
 }
 
 TEST(StageFurnace, WhiteFurnaceIsOneEverywhereAndTerminatesAtAlbedoOne) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const Scene scene = sceneFile("white_furnace.gltf");
   for (const char* nee : {"0", "1"}) {
     // Albedo 1, no depth cap: only Russian roulette (q < 1) or escaping ends a path.
@@ -227,7 +227,7 @@ TEST(StageFurnace, WhiteFurnaceIsOneEverywhereAndTerminatesAtAlbedoOne) {
 // variance over-states Sobol's error, which only makes the check conservative) and, on the
 // Cornell box, the mean of an independent render.
 TEST(StageFurnace, PathTracerWithSobolMatchesTheSeriesAndIndependentSampling) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const Scene furnace = sceneFile("furnace_closed.gltf");
   for (int depth : {1, 3, -1}) {
     RenderSpec spec{

@@ -46,7 +46,7 @@ double relativeVariance(const RenderResult& result, uint32_t spp) {
 }
 
 TEST(StageStability, ShrinkingLightAtFixedPowerNeedsNextEventEstimation) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const uint32_t spp = 64;
   double relVarNoNee[3], relVarNee[3];
   const float sides[3] = {0.4f, 0.1f, 0.025f};  // areas 256 : 16 : 1
@@ -76,7 +76,7 @@ TEST(StageStability, ShrinkingLightAtFixedPowerNeedsNextEventEstimation) {
 }
 
 TEST(StageStability, SmallLightCentreMatchesTheFormFactor) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   // Radiance of the floor right below a square light of side s at height 1 with power 1:
   // L = ρ/π · E, E = Φ/(π s²) · π · F, F = 4 · (1/2π) · 2 · (a/r) · atan(a/r), a = s/2, r =
   // √(1+a²).
@@ -95,7 +95,7 @@ TEST(StageStability, SmallLightCentreMatchesTheFormFactor) {
 }
 
 TEST(StageStability, LightTouchingAWallStaysFiniteAndUnbiased) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const Scene scene = loadScene(std::string(PATHWAY_SCENES_DIR) + "/light_touching_wall.gltf");
   const RenderResult nee = render(scene, {test::stage(5), {{"max-depth", "3"}}, 32, 32, 64});
   const RenderResult noNee = render(scene, {test::stage(5),
@@ -111,7 +111,7 @@ TEST(StageStability, LightTouchingAWallStaysFiniteAndUnbiased) {
 }
 
 TEST(StageStability, NeeOnAndOffAgreeOnTheCornellBox) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const Scene scene = loadScene(std::string(PATHWAY_SCENES_DIR) + "/cornell_box.gltf");
   for (int channel = 0; channel < 3; ++channel) {
     const RenderResult nee = render(scene, {test::stage(5), {{"max-depth", "3"}}, 24, 24, 64});
@@ -136,7 +136,7 @@ Scene roomWithDegenerateEmitters() {
 }
 
 TEST(StageStability, DegenerateAndZeroAreaEmittersAreSkipped) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   const Scene clean = test::boxRoom();
   const Scene dirty = roomWithDegenerateEmitters();
   EXPECT_EQ(collectEmissiveTriangles(dirty).size(), collectEmissiveTriangles(clean).size());
@@ -150,7 +150,7 @@ TEST(StageStability, DegenerateAndZeroAreaEmittersAreSkipped) {
 }
 
 TEST(StageStability, GrazingCameraRaysStayFiniteInEveryStage) {
-  PATHWAY_REQUIRE_SOLUTIONS();
+  PATHWAY_REQUIRE_REFERENCE();
   Scene scene = test::boxRoom();
   // Eye exactly in the floor plane, looking along it: rays graze the floor.
   scene.camera->cameraToWorld =
@@ -165,7 +165,7 @@ TEST(StageStability, GrazingCameraRaysStayFiniteInEveryStage) {
 
 TEST(StageSkeletons, StudentSkeletonsRunAndReportTheirTodos) {
   // In a handout, assignments/ holds the student's own work, finished or not.
-  if (!test::kHaveSolutions) GTEST_SKIP() << "needs the untouched skeletons";
+  if (!test::kFullRepository) GTEST_SKIP() << "needs the untouched skeletons";
   const Scene scene = test::boxRoom();
   for (int stage = 1; stage <= 5; ++stage) {
     const std::string name = "stage" + std::to_string(stage);
@@ -181,7 +181,7 @@ TEST(StageSkeletons, StudentSkeletonsRunAndReportTheirTodos) {
 }
 
 TEST(StageSkeletons, ReferenceSolutionsHaveNoTodos) {
-  if (!test::kHaveSolutions) GTEST_SKIP() << "built without solutions/";
+  if (!test::haveReference()) GTEST_SKIP() << "needs the reference stages";
   const Scene scene = test::boxRoom();
   for (int stage = 1; stage <= 5; ++stage) {
     const std::string name = "stage" + std::to_string(stage) + "@ref";

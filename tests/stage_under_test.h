@@ -1,9 +1,10 @@
 // Which version of the stages the stage tests check.
 //
-// By default they check the reference solutions, and in a student handout (no solutions/) they
-// are skipped. With PATHWAY_TEST_STUDENT=1 in the environment they check the student's stages
-// instead ("stageN", the files in assignments/), so students can run the course's own analytic
-// tests on their work:  PATHWAY_TEST_STUDENT=1 ctest --preset release -R "Stage|Film|PixelFilter"
+// By default they check the reference stages (built in, or in a handout the compiled reference
+// library), and are skipped where there are none. With PATHWAY_TEST_STUDENT=1 in the environment
+// they check the student's stages instead ("stageN", the files in assignments/), so students can
+// run the course's own analytic tests on their work:  PATHWAY_TEST_STUDENT=1 ctest --preset release
+// -R "Stage|Film|PixelFilter"
 #pragma once
 
 #include <gtest/gtest.h>
@@ -36,14 +37,23 @@ inline const Stage1Functions& stage1UnderTest() {
   return StageKit(1, variantUnderTest(), EarlierStages::Own).stage1();
 }
 
+// A full repository: solutions/ built into the program, assignments/ holding the untouched
+// skeletons. In a student handout solutions/ is not there, and assignments/ holds the student's
+// own work, finished or not.
 #ifdef PATHWAY_HAS_SOLUTIONS
-constexpr bool kHaveSolutions = true;
+constexpr bool kFullRepository = true;
 #else
-constexpr bool kHaveSolutions = false;
+constexpr bool kFullRepository = false;
 #endif
+
+// Whether the reference stages are there: built in, or a handout's compiled library
+// (render/reference_library.h, loaded by tests/reference_stages.cpp as the program loads it).
+inline bool haveReference() {
+  return findStageIntegrator(1, Variant::Reference) != nullptr;
+}
 
 }  // namespace pathway::test
 
-#define PATHWAY_REQUIRE_SOLUTIONS()                                                \
-  if (!::pathway::test::checkingStudentCode() && !::pathway::test::kHaveSolutions) \
-  GTEST_SKIP() << "built without solutions/ (PATHWAY_TEST_STUDENT=1 checks your stages)"
+#define PATHWAY_REQUIRE_REFERENCE()                                                 \
+  if (!::pathway::test::checkingStudentCode() && !::pathway::test::haveReference()) \
+  GTEST_SKIP() << "no reference stages here (PATHWAY_TEST_STUDENT=1 checks your stages)"

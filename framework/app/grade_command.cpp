@@ -21,6 +21,7 @@
 #include "grade/grade_calibration.h"
 #include "grade/stage_grading.h"
 #include "render/integrator_registry.h"
+#include "render/reference_library.h"
 #include "render/stage_catalog.h"
 #include "render/stage_library.h"
 #include "scene/gltf_loader.h"
@@ -270,14 +271,15 @@ int run(const GradeOptions& options) {
   }
   const ComparisonSettings settings;
   GradingRun run = gradingRun(options);
-  // A student handout has no reference stages to put under yours: grade yours together.
-  const bool handout = !findStageIntegrator(1, Variant::Reference);
-  if (handout) run.together = true;
+  // Without reference stages (a handout whose library is missing or refused) there are none to
+  // put under yours: grade yours together, and say why.
+  const bool noReference = !findStageIntegrator(1, Variant::Reference);
+  if (noReference) run.together = true;
   GradeSummary summary = gradeStages(run, settings);
-  if (handout && !options.together)
-    summary.notes.push_back(
-        "This build has no reference stages (a student handout), so your stages are graded "
-        "together: a bug in an earlier stage also fails the stages after it.");
+  if (noReference && !options.together)
+    summary.notes.push_back("There are no reference stages here (" + loadReferenceStages().problem +
+                            "), so your stages are graded together: a bug in an earlier stage "
+                            "also fails the stages after it.");
   return finish(summary, options, settings);
 }
 

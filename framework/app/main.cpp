@@ -7,6 +7,7 @@
 
 #include "app/commands.h"
 #include "core/error.h"
+#include "render/reference_library.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Pathway: from pixel filtering to path tracing, one stage at a time."};
@@ -14,6 +15,8 @@ int main(int argc, char** argv) {
   std::vector<pathway::Command> commands = {
       pathway::addRenderCommand(app), pathway::addGradeCommand(app), pathway::addChartCommand(app),
       pathway::addMergeCommand(app), pathway::addClusterCommand(app)};
+  const pathway::Command reference = pathway::addReferenceCommand(app);
+  commands.push_back(reference);
 #ifdef PATHWAY_HAS_VIEWER
   commands.push_back(pathway::addViewCommand(app));
 #endif
@@ -31,6 +34,11 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& error) {
     return app.exit(error);
   }
+  // The reference stages: built in, or a handout's compiled library. Whatever is off with a
+  // library is said once here; everything that needs no reference works on without it.
+  const pathway::ReferenceStages& stages = pathway::loadReferenceStages();
+  if (!stages.problem.empty() && !reference.app->parsed())
+    std::fprintf(stderr, "pathway: note: reference stages %s\n", stages.describe().c_str());
   try {
     for (const pathway::Command& command : commands)
       if (command.app->parsed()) return command.run();

@@ -1,6 +1,7 @@
 #include "grade/grading_cases.h"
 
 #include "core/error.h"
+#include "render/reference_library.h"
 
 namespace pathway {
 namespace {
@@ -136,8 +137,10 @@ std::vector<GradingCase> declareCases() {
 RenderRecipe GradingCase::recipe(Variant variant, EarlierStages earlier, uint64_t seed) const {
   const IntegratorInfo* info = findStageIntegrator(stage, variant);
   if (!info)
-    throw PathwayError("the " + std::string(variantName(variant)) + " stage " +
-                       std::to_string(stage) + " is not built into this program");
+    throw PathwayError(variant == Variant::Reference
+                           ? referenceStageMissing(stage)
+                           : "the student stage " + std::to_string(stage) +
+                                 " is not built into this program");
   RenderRecipe recipe;
   recipe.integrator = info->name;
   recipe.params = resolveParams(info->name, info->params, params);

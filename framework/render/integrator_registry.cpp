@@ -4,6 +4,7 @@
 #include <map>
 
 #include "core/error.h"
+#include "render/reference_library.h"
 #include "render/stage_catalog.h"
 
 namespace pathway {
@@ -60,8 +61,11 @@ const IntegratorInfo& findIntegrator(const std::string& name) {
   std::string known;
   for (const IntegratorInfo* info : allIntegrators())
     known += (known.empty() ? "" : ", ") + info->name;
+  const std::string& why = loadReferenceStages().problem;
+  const bool reference = name.size() > 4 && name.compare(name.size() - 4, 4, "@ref") == 0;
   throw PathwayError("unknown integrator '" + name + "' (known: " + known +
-                     "; 'pathway render --list' describes them)");
+                     "; 'pathway render --list' describes them)" +
+                     (reference && !why.empty() ? "; no reference stages: " + why : ""));
 }
 
 const IntegratorInfo* findStageIntegrator(int stage, Variant variant) {

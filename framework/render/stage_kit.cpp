@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "core/error.h"
+#include "render/reference_library.h"
 
 namespace pathway {
 namespace {
@@ -23,9 +24,9 @@ Provided& provided(Variant variant) {
 }
 
 [[noreturn]] void missing(int stage, Variant variant) {
-  throw PathwayError("the " + std::string(variantName(variant)) + " stage " +
-                     std::to_string(stage) + " is not built into this program" +
-                     (variant == Variant::Reference ? " (no solutions/ folder)" : ""));
+  if (variant == Variant::Reference) throw PathwayError(referenceStageMissing(stage));
+  throw PathwayError("the student stage " + std::to_string(stage) +
+                     " is not built into this program");
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "render/integrator_registry.h"
+#include "render/reference_library.h"
 
 namespace pathway {
 namespace {
@@ -121,6 +122,8 @@ void integratorWidgets(ViewerState& state, int lane) {
     ImGui::TextDisabled(lane == 0 ? "(key T)" : "(Shift+T)");
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextDisabled("%s", current->summary.c_str());
+    if (current->stage > 0 && !findStageIntegrator(current->stage, Variant::Reference))
+      ImGui::TextDisabled("reference stages %s", loadReferenceStages().describe().c_str());
     ImGui::PopTextWrapPos();
     if (current->stage > 1 && !isReference) {
       // Your stage N on the reference's earlier stages: what the grader checks in isolation.

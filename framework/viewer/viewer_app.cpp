@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "render/reference_library.h"
 #include "viewer/frame_metadata.h"
 #include "viewer/shortcuts.h"
 
@@ -127,10 +128,10 @@ void Viewer::toggleGrade() {
   if (!canGradeFrame(*frame)) {
     FrameGrade unavailable;
     unavailable.job = frame->job;
-    unavailable.error =
-        "cannot grade " + frame->integrator +
-        (frame->error.empty() ? ": its reference is not built in (in a handout, use pathway grade)"
-                              : ": it did not render");
+    unavailable.error = "cannot grade " + frame->integrator +
+                        (frame->error.empty() ? ": it has no reference here (" +
+                                                    loadReferenceStages().describe() + ")"
+                                              : ": it did not render");
     grade_ = unavailable;
     return;
   }

@@ -1,0 +1,133 @@
+// The student handout as a student gets it (scripts/make-handout --check): exported with the
+// reference stages compiled and no solution code, unpacked into a fresh folder, built, its own
+// suite passed and scripts/start run there without a display. Then its self-grade gives the
+// verdict the autograder (`pathway grade --submission` here) gives, case by case: on the untouched
+// skeletons, and on a submission compiled into the handout. Not part of the handout itself.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+
+#include "run_command.h"
+#include "stage_under_test.h"
+
+namespace pathway {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kSource = PATHWAY_SOURCE_DIR;
+
+// Each case's status ("passed", "failed") by its name, from a results.json this program wrote.
+std::map<std::string, std::string> caseStatuses(const std::string& resultsFile) {
+  const std::string json = test::readTextFile(resultsFile);
+  std::map<std::string, std::string> statuses;
+  const std::string name = "{\"name\": \"", status = "\"status\": \"";
+  for (size_t at = json.find(name); at != std::string::npos; at = json.find(name, at + 1)) {
+    const size_t nameEnd = json.find('"', at + name.size());
+    const size_t statusAt = json.find(status, nameEnd) + status.size();
+    statuses[json.substr(at + name.size(), nameEnd - at - name.size())] =
+        json.substr(statusAt, json.find('"', statusAt) - statusAt);
+  }
+  return statuses;
+}
+
+// The autograder's verdicts on `submission` (a folder of stage files), graded in this repository.
+std::map<std::string, std::string> autograderVerdicts(const fs::path& submission,
+                                                      const fs::path& output) {
+  const test::CommandOutcome graded =
+      test::runCommand(std::string(PATHWAY_BINARY) + " grade -q --submission " +
+                       submission.string() + " --output " + output.string());
+  EXPECT_NE(graded.exitCode, -1) << graded.output;
+  return caseStatuses((output / "results.json").string());
+}
+
+class Handout : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!test::kFullRepository) GTEST_SKIP() << "makes a handout: needs the full repository";
+    if (test::runCommand("git -C " + kSource + " rev-parse 2>&1").exitCode != 0)
+      GTEST_SKIP() << "not a git checkout (make-handout packs the files git tracks)";
+    dir_ = test::freshTestFolder("pathway_handout");
+  }
+  void TearDown() override {
+    if (!dir_.empty()) fs::remove_all(dir_);
+  }
+  fs::path dir_;
+};
+
+TEST_F(Handout, ShipsTheReferenceCompiledBuildsPassesItsSuiteAndGradesAsTheAutograder) {
+  const fs::path tarball = dir_ / "handout.tar.gz", unpacked = dir_ / "unpacked";
+  const test::CommandOutcome made =
+      test::runCommand(kSource + "/scripts/make-handout " + tarball.string() + " --check --keep " +
+                       unpacked.string());
+  ASSERT_EQ(made.exitCode, 0) << made.output;
+  EXPECT_NE(made.output.find("solution lines searched"), std::string::npos) << made.output;
+  EXPECT_NE(made.output.find("100% tests passed"), std::string::npos) << made.output;
+  EXPECT_NE(made.output.find("reference stages: from "), std::string::npos) << made.output;
+  const fs::path handout = unpacked / "pathway";
+
+  // The tarball as shipped, the compiled library included, holds no line of solutions/.
+  const test::CommandOutcome leaks = test::runCommand(
+      "mkdir " + (dir_ / "shipped").string() + " && tar -xzf " + tarball.string() + " -C " +
+      (dir_ / "shipped").string() + " && " + kSource + "/scripts/handout-leaks " + kSource + " " +
+      (dir_ / "shipped").string());
+  EXPECT_EQ(leaks.exitCode, 0) << leaks.output;
+  EXPECT_NE(leaks.output.find(": 0 found"), std::string::npos) << leaks.output;
+
+  // What it holds: the reference compiled, no solutions, the student's README.
+  EXPECT_FALSE(fs::exists(handout / "solutions"));
+  EXPECT_FALSE(fs::exists(handout / "bench"));
+  EXPECT_TRUE(fs::exists(handout / "reference/libpathway_reference.so"));
+  const std::string readme = test::readTextFile((handout / "README.md").string());
+  EXPECT_EQ(readme, test::readTextFile(kSource + "/docs/student-readme.md"));
+  for (const char* instructors : {"make-handout", "make-autograder", "--calibrate",
+                                  "--make-references", "cluster", "solutions/", "slides", "bench"})
+    EXPECT_EQ(readme.find(instructors), std::string::npos) << instructors;
+
+  // The untouched skeletons: the handout's self-grade (scripts/start wrote it) and the
+  // autograder's, case by case.
+  const std::map<std::string, std::string> selfGrade =
+      caseStatuses((handout / "out/grade-report/results.json").string());
+  EXPECT_GE(selfGrade.size(), 15u);
+  EXPECT_EQ(selfGrade, autograderVerdicts(kSource + "/assignments", dir_ / "skeletons"));
+
+  // A submission compiled into the handout: finished stages, with a missing cos θ in stage 2.
+  const fs::path submission = dir_ / "submission";
+  fs::create_directories(submission);
+  const test::CommandOutcome prepared = test::runCommand(
+      "cp " + kSource + "/solutions/*/*.cpp " + submission.string() + " && sed -i " +
+      "'s/visibility \\* local.z/visibility/' " + (submission / "stage2_nested_ao.cpp").string() +
+      " && for f in " + submission.string() + "/*.cpp; do n=$(basename $f); " + "cp $f " +
+      handout.string() + "/assignments/${n%%_*}/$n; done && cd " + handout.string() +
+      " && cmake --build --preset release --target pathway >/dev/null && " +
+      "build/release/pathway grade -q --report " + (dir_ / "self-grade").string());
+  EXPECT_EQ(prepared.exitCode, 1) << "a stage fails: " << prepared.output;
+  const std::map<std::string, std::string> selfGraded =
+      caseStatuses((dir_ / "self-grade/results.json").string());
+  ASSERT_GE(selfGraded.size(), 15u) << prepared.output;
+  for (const auto& [name, status] : selfGraded)
+    EXPECT_EQ(status, name.rfind("Stage 2", 0) == 0 ? "failed" : "passed") << name;
+  EXPECT_EQ(selfGraded, autograderVerdicts(submission, dir_ / "autograded"));
+}
+
+TEST(HandoutLeaks, ASolutionLineInTheHandoutIsFound) {
+  if (!test::kFullRepository) GTEST_SKIP() << "needs solutions/";
+  const fs::path tree = test::freshTestFolder("pathway_handout_leaks");
+  fs::create_directories(tree / "docs");
+  std::ofstream(tree / "docs/notes.md") << "Nothing of the solution here.\n";
+  const std::string scan = kSource + "/scripts/handout-leaks " + kSource + " " + tree.string();
+  EXPECT_EQ(test::runCommand(scan).exitCode, 0);
+  fs::copy_file(kSource + "/solutions/stage3/stage3_ao_4d.cpp", tree / "docs/stage3.txt");
+  const test::CommandOutcome leak = test::runCommand(scan);
+  EXPECT_EQ(leak.exitCode, 1);
+  EXPECT_NE(leak.output.find("docs/stage3.txt: holds a line of solutions/stage3/stage3_ao_4d.cpp"),
+            std::string::npos)
+      << leak.output;
+  fs::remove_all(tree);
+}
+
+}  // namespace
+}  // namespace pathway

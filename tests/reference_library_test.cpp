@@ -1,0 +1,165 @@
+// The reference stages compiled into a library (render/reference_library.h), as a handout ships
+// them: sealed for this platform and framework, no symbol table; a library that is missing, cut
+// short, corrupt, or made for another platform or framework version is refused with one message
+// naming the file and why, and the program works on without it; and in the full repository, the
+// library renders every stage bit for bit as the built-in reference does.
+#include "render/reference_library.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "io/image_io.h"
+#include "run_command.h"
+#include "stage_under_test.h"
+
+namespace pathway {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kLibrary = PATHWAY_REFERENCE_LIBRARY_FILE;
+
+void writeFile(const fs::path& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+// The library's bytes with the line of its seal that starts with `key` replaced.
+std::string withSealLine(std::string bytes, const std::string& key, const std::string& line) {
+  const size_t at = bytes.rfind("\n" + key + " ");
+  EXPECT_NE(at, std::string::npos) << key;
+  return bytes.replace(at + 1, bytes.find('\n', at + 1) - at - 1, line);
+}
+
+class ReferenceLibrary : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = test::freshTestFolder("pathway_reference_library");
+    bytes_ = test::readTextFile(kLibrary);
+    ASSERT_GT(bytes_.size(), 1000u) << kLibrary << " is missing or empty";
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  // A copy of the library changed by the test, refused for its reason.
+  std::string copy(const std::string& name, const std::string& bytes) {
+    const std::string path = (dir_ / name).string();
+    writeFile(path, bytes);
+    return path;
+  }
+  // `pathway <arguments>` run with the library `library` in place of the usual one.
+  test::CommandOutcome runWith(const std::string& library, const std::string& arguments) {
+    return test::runCommand("PATHWAY_REFERENCE_LIBRARY=" + library + " " + PATHWAY_BINARY + " " +
+                            arguments);
+  }
+
+  fs::path dir_;
+  std::string bytes_;
+};
+
+TEST_F(ReferenceLibrary, IsSealedForThisBuildAndHasNoSymbolTable) {
+  EXPECT_EQ(referenceLibraryProblem(kLibrary), "");
+  EXPECT_EQ(bytes_.find(".symtab"), std::string::npos) << "the symbol table was not stripped";
+  const test::CommandOutcome exported = test::runCommand("nm -D --defined-only " + kLibrary);
+  EXPECT_EQ(exported.exitCode, 0) << exported.output;
+  EXPECT_EQ(exported.output, "") << "the library exports symbols of its own";
+  // This process found its reference stages where the program finds them.
+  const ReferenceStages& stages = loadReferenceStages();
+  EXPECT_EQ(stages.source, test::kFullRepository ? ReferenceStages::Source::BuiltIn
+                                                 : ReferenceStages::Source::Library)
+      << stages.describe();
+  EXPECT_EQ(stages.problem, "");
+}
+
+TEST_F(ReferenceLibrary, ARefusedLibraryIsNamedWithItsReason) {
+  std::string flipped = bytes_;
+  flipped[bytes_.size() / 2] ^= 0x10;
+  const struct {
+    std::string file, reason;
+  } refused[] = {
+      {(dir_ / "missing.so").string(), "is missing"},
+      {copy("truncated.so", bytes_.substr(0, bytes_.size() / 2)), "no seal at its end"},
+      {copy("not_a_library.so", "<html>404</html>\n"), "not a sealed Pathway reference library"},
+      {copy("corrupt.so", flipped), "is corrupt"},
+      {copy("other_interface.so", withSealLine(bytes_, "interface", "interface 0123456789abcdef")),
+       "another version of the framework (stage interface 0123456789abcdef"},
+      {copy("other_platform.so",
+            withSealLine(bytes_, "platform", "platform ubuntu 24.04 aarch64, GNU 13")),
+       "was built for ubuntu 24.04 aarch64, GNU 13, and this program for"},
+  };
+  for (const auto& [file, reason] : refused) {
+    const std::string problem = referenceLibraryProblem(file);
+    EXPECT_NE(problem.find(file), std::string::npos) << problem;
+    EXPECT_NE(problem.find(reason), std::string::npos) << problem;
+  }
+  // A sealed file that is no library passes the seal and is refused by the loader.
+  const std::string text = copy("sealed_text.so", "not an ELF file\n");
+  sealReferenceLibrary(text);
+  EXPECT_EQ(referenceLibraryProblem(text), "");
+  const test::CommandOutcome loaded = runWith(text, "reference");
+  EXPECT_NE(loaded.output.find(text + " cannot be loaded"), std::string::npos) << loaded.output;
+}
+
+TEST_F(ReferenceLibrary, TheProgramSaysWhatIsOffAndWorksOnWithoutIt) {
+  std::string flipped = bytes_;
+  flipped[bytes_.size() / 3] ^= 0x01;
+  const std::string corrupt = copy("corrupt.so", flipped);
+  const std::string image = (dir_ / "a.exr").string();
+  // Said once, naming the file and why; the student's own stage renders as ever.
+  const test::CommandOutcome render =
+      runWith(corrupt, "render -q -i stage1 --spp 1 --width 8 --height 8 -o " + image);
+  EXPECT_EQ(render.exitCode, 0) << render.output;
+  EXPECT_TRUE(fs::exists(image));
+  const std::string note = "pathway: note: reference stages ";
+  ASSERT_NE(render.output.find(note), std::string::npos) << render.output;
+  EXPECT_EQ(render.output.find(note), render.output.rfind(note)) << "said more than once";
+  EXPECT_NE(render.output.find(corrupt + " is corrupt"), std::string::npos) << render.output;
+
+  const test::CommandOutcome status = runWith(corrupt, "reference");
+  EXPECT_NE(status.output.find(corrupt + " is corrupt"), std::string::npos) << status.output;
+  if (test::kFullRepository) {  // the built-in reference stays
+    EXPECT_EQ(status.exitCode, 0) << status.output;
+    EXPECT_NE(status.output.find("built in"), std::string::npos) << status.output;
+    return;
+  }
+  EXPECT_EQ(status.exitCode, 1) << status.output;
+  EXPECT_NE(status.output.find("not available"), std::string::npos) << status.output;
+  const test::CommandOutcome list = runWith(corrupt, "render --list");
+  EXPECT_EQ(list.exitCode, 0);
+  EXPECT_EQ(list.output.find("@ref"), std::string::npos) << list.output;
+  const test::CommandOutcome reference = runWith(corrupt, "render -q -i stage5@ref -o " + image);
+  EXPECT_EQ(reference.exitCode, 1);
+  EXPECT_NE(reference.output.find("no reference stages: " + corrupt + " is corrupt"),
+            std::string::npos)
+      << reference.output;
+  // The grader grades the stages together, and the report says why.
+  const std::string report = (dir_ / "report").string();
+  runWith(corrupt, "grade -q --stage 2 --report " + report);
+  const std::string page = test::readTextFile(report + "/index.html");
+  EXPECT_NE(page.find("graded together"), std::string::npos);
+  EXPECT_NE(page.find("corrupt"), std::string::npos);
+}
+
+TEST_F(ReferenceLibrary, RendersEveryStageBitForBitAsTheBuiltInReference) {
+  if (!test::kFullRepository) GTEST_SKIP() << "needs the reference built in, to compare with";
+  const test::CommandOutcome status = runWith(kLibrary, "reference");
+  ASSERT_NE(status.output.find("reference stages: from " + kLibrary), std::string::npos)
+      << status.output;
+  // Every reference stage, and a student stage on the reference's earlier stages.
+  for (const std::string integrator : {"stage1@ref", "stage2@ref", "stage3@ref", "stage4@ref",
+                                       "stage5@ref", "stage3 --earlier-stages reference"}) {
+    const std::string arguments = "render -q --width 40 --height 40 --spp 4 --filter mitchell -i " +
+                                  integrator + " -o " + (dir_ / "a.exr").string();
+    ASSERT_EQ(test::runCommand(std::string(PATHWAY_BINARY) + " " + arguments).exitCode, 0);
+    const LoadedImage builtIn = readImageFile((dir_ / "a.exr").string());
+    ASSERT_EQ(runWith(kLibrary, arguments).exitCode, 0);
+    const LoadedImage library = readImageFile((dir_ / "a.exr").string());
+    EXPECT_EQ(library.images.color.pixels, builtIn.images.color.pixels) << integrator;
+    EXPECT_EQ(library.images.variance.pixels, builtIn.images.variance.pixels) << integrator;
+    EXPECT_EQ(library.images.weight.pixels, builtIn.images.weight.pixels) << integrator;
+    EXPECT_EQ(library.metadata.at("pathway:shadowRays"), builtIn.metadata.at("pathway:shadowRays"));
+  }
+}
+
+}  // namespace
+}  // namespace pathway
