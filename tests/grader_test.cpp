@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "grade_results.h"
 #include "io/image_io.h"
 #include "run_command.h"
 #include "stage_under_test.h"
@@ -17,43 +18,20 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The tests of a results.json, as (status, image verdict, output) triples, by plain text search:
-// enough for a file this program wrote itself in a fixed layout.
-struct ResultLine {
-  std::string status, image, output;
-};
-std::vector<ResultLine> resultLines(const std::string& json) {
-  std::vector<ResultLine> lines;
-  for (size_t at = json.find("{\"name\""); at != std::string::npos;
-       at = json.find("{\"name\"", at + 1)) {
-    const size_t end = json.find('\n', at);
-    const std::string line = json.substr(at, end - at);
-    auto field = [&](const std::string& key) {
-      const size_t start = line.find("\"" + key + "\": \"");
-      if (start == std::string::npos) return std::string();
-      const size_t from = start + key.size() + 5;
-      return line.substr(from, line.find('"', from) - from);
-    };
-    const size_t output = line.find("\"output\": \"");
-    lines.push_back({field("status"), field("image"),
-                     output == std::string::npos ? "" : line.substr(output, line.size() - output)});
-  }
-  return lines;
-}
+using ResultLine = test::CaseLine;
 
 class Grader : public ::testing::Test {
  protected:
   void SetUp() override { dir_ = test::freshTestFolder("pathway_grade"); }
   void TearDown() override { fs::remove_all(dir_); }
 
-  // Runs `pathway grade <arguments>` with its report in the test's folder (`environment`:
-  // variables set for it, "NAME=value ").
-  test::CommandOutcome grade(const std::string& arguments, const std::string& environment = "") {
-    return test::runCommand(environment + PATHWAY_BINARY + " grade -q --report " +
+  // Runs `pathway grade <arguments>` with its report in the test's folder.
+  test::CommandOutcome grade(const std::string& arguments) {
+    return test::runCommand(std::string(PATHWAY_BINARY) + " grade -q --report " +
                             (dir_ / "report").string() + " " + arguments);
   }
   std::vector<ResultLine> results() {
-    return resultLines(test::readTextFile((dir_ / "report/results.json").string()));
+    return test::caseLines(test::readTextFile((dir_ / "report/results.json").string()));
   }
 
   fs::path dir_;
@@ -217,12 +195,20 @@ TEST_P(GraderMutant, IsJudgedByItsImage) {
 
   // A handout's self-grade runs on the compiled reference library (render/reference_library.h)
   // where the autograder has the reference built in: the same verdict on every case.
-  grade("--stages-library " + mutant.library + stage + limit,
-        "PATHWAY_REFERENCE_LIBRARY=" PATHWAY_REFERENCE_LIBRARY_FILE " ");
-  const std::vector<ResultLine> handout = results();
-  ASSERT_EQ(handout.size(), lines.size());
-  for (size_t i = 0; i < lines.size(); ++i)
-    EXPECT_EQ(handout[i].status, lines[i].status) << "case " << i << ": " << handout[i].output;
+  const std::vector<ResultLine> builtIn = lines;
+  const std::string report = (dir_ / "report-library").string();
+  const test::CommandOutcome library =
+      test::runCommand("PATHWAY_REFERENCE_LIBRARY=" PATHWAY_REFERENCE_LIBRARY_FILE
+                       " " PATHWAY_BINARY " grade -q --report " +
+                       report + " --stages-library " + mutant.library + stage + limit);
+  EXPECT_EQ(library.exitCode, outcome.exitCode) << library.output;
+  EXPECT_EQ(library.output.find("note: reference stages"), std::string::npos)
+      << "the library was refused: " << library.output;
+  const std::vector<ResultLine> handout =
+      test::caseLines(test::readTextFile(report + "/results.json"));
+  ASSERT_EQ(handout.size(), builtIn.size());
+  for (size_t i = 0; i < builtIn.size(); ++i)
+    EXPECT_EQ(handout[i].status, builtIn[i].status) << handout[i].name << ": " << handout[i].output;
 }
 
 INSTANTIATE_TEST_SUITE_P(Mutants, GraderMutant, ::testing::ValuesIn(mutants()),

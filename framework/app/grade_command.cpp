@@ -96,6 +96,7 @@ int finish(const GradeSummary& summary, const GradeOptions& options,
   if (options.results.empty()) extra["results.json"] = gradescopeResults(summary, settings);
   writeHtmlReport(options.report, summary, settings, extra);
   if (!options.quiet) {
+    for (const std::string& note : summary.notes) std::printf("%s\n", note.c_str());
     for (const CaseResult& c : summary.cases)
       std::printf("%-40s %s\n", c.title.c_str(), c.passed ? "passed" : "FAILED");
     std::printf("%.1f / %.1f points; report %s/index.html, results %s\n", summary.points(),
@@ -277,7 +278,7 @@ int run(const GradeOptions& options) {
   if (noReference) run.together = true;
   GradeSummary summary = gradeStages(run, settings);
   if (noReference && !options.together)
-    summary.notes.push_back("There are no reference stages here (" + loadReferenceStages().problem +
+    summary.notes.push_back("There are no reference stages here (" + referenceStagesProblem() +
                             "), so your stages are graded together: a bug in an earlier stage "
                             "also fails the stages after it.");
   return finish(summary, options, settings);

@@ -61,7 +61,7 @@ const IntegratorInfo& findIntegrator(const std::string& name) {
   std::string known;
   for (const IntegratorInfo* info : allIntegrators())
     known += (known.empty() ? "" : ", ") + info->name;
-  const std::string& why = loadReferenceStages().problem;
+  const std::string& why = referenceStagesProblem();
   const bool reference = name.size() > 4 && name.compare(name.size() - 4, 4, "@ref") == 0;
   throw PathwayError("unknown integrator '" + name + "' (known: " + known +
                      "; 'pathway render --list' describes them)" +

@@ -8,20 +8,19 @@
 
 namespace pathway {
 
-std::vector<int> loadStageLibrary(const std::string& path) {
+std::vector<int> loadStageLibrary(const std::string& path, Variant variant) {
   const size_t before = registrationLog().size();
   // dlopen reads a name without a slash as a library to search for, not a file here.
   const std::string file = path.find('/') == std::string::npos ? "./" + path : path;
   if (!dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL)) {
     const char* reason = dlerror();
-    throw PathwayError(path +
-                       ": cannot load the stage library: " + (reason ? reason : "unknown reason"));
+    throw PathwayError(path + " cannot be loaded: " + (reason ? reason : "unknown reason"));
   }
   std::vector<int> stages;
   const std::vector<std::string>& log = registrationLog();
   for (size_t i = before; i < log.size(); ++i) {
     const IntegratorInfo& info = findIntegrator(log[i]);
-    if (info.stage > 0 && info.variant == Variant::Student) stages.push_back(info.stage);
+    if (info.stage > 0 && info.variant == variant) stages.push_back(info.stage);
   }
   return stages;
 }

@@ -1,17 +1,21 @@
-// Student stages built on their own, into a shared library that the running program loads: the
-// grader builds each submission (and each planted bug of the mutant suite) this way, instead of
-// building the whole program again. Loading it registers its stages over the built-in student
-// stages ("stageN"); the reference stages stay as they are.
+// Stages built on their own, into a shared library that the running program loads: the grader
+// builds each submission (and each planted bug of the mutant suite) this way, instead of building
+// the whole program again, and a handout ships the reference stages this way
+// (render/reference_library.h). Loading a library registers its stages over the built-in ones of
+// the same name ("stageN", or "stageN@ref").
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "core/variant.h"
+
 namespace pathway {
 
 // Loads `path` (once per process; it stays loaded). Throws PathwayError naming the file and the
-// loader's reason (missing file, undefined symbol, ...). Returns the stages it registered.
-std::vector<int> loadStageLibrary(const std::string& path);
+// loader's reason (missing file, undefined symbol, ...). Returns the stages of `variant` it
+// registered.
+std::vector<int> loadStageLibrary(const std::string& path, Variant variant = Variant::Student);
 
 // How to compile stage files into such a library with this build's compiler and flags: the
 // program and its arguments; append the sources, "-o" and the library's path.

@@ -27,8 +27,7 @@ FrameGrade gradeFrame(const LaneFrame& frame, const LoadedScene& scene) {
   grade.integrator = frame.integrator;
   try {
     const IntegratorInfo* reference = stageReferenceOf(frame.integrator);
-    if (!reference)
-      throw PathwayError("no reference of " + frame.integrator + " is built into this program");
+    if (!reference) throw PathwayError(missingReferenceOf(frame.integrator));
     if (frame.stats.samplesPerPixel < kMinimumSpp)
       throw PathwayError("grading needs at least " + std::to_string(kMinimumSpp) +
                          " samples per pixel (each pixel's own variance estimate)");

@@ -27,8 +27,7 @@ void ReferenceMaker::start(std::shared_ptr<const LaneFrame> frame,
   const IntegratorInfo* reference = stageReferenceOf(frame->integrator);
   integrator_ = reference ? reference->name : frame->integrator;
   if (!reference)
-    error_ = "no reference of " + frame->integrator +
-             " is built into this program (load one with --reference)";
+    error_ = missingReferenceOf(frame->integrator) + " (load one with --reference)";
   else if (!frame->error.empty() || !scene)
     error_ = "cannot make a reference: " + frame->integrator + " did not render";
   if (!error_.empty()) return;

@@ -1,6 +1,7 @@
 #include "viewer/stage_reference.h"
 
 #include "core/error.h"
+#include "render/reference_library.h"
 
 namespace pathway {
 
@@ -15,12 +16,18 @@ const IntegratorInfo* stageReferenceOf(const std::string& integrator) {
   return nullptr;
 }
 
+std::string missingReferenceOf(const std::string& integrator) {
+  for (const IntegratorInfo* info : allIntegrators())
+    if (info->name == integrator && info->stage > 0)
+      return "no reference of " + integrator + " here: " + referenceStageMissing(info->stage);
+  return "no reference of " + integrator + ": it is not a course stage";
+}
+
 std::optional<RenderResult> renderStageReference(
     const LaneFrame& frame, const LoadedScene& scene, uint32_t spp, uint32_t samplesPerPass,
     const std::function<void(const RenderStats&)>& onPass, const std::atomic<bool>* cancel) {
   const IntegratorInfo* reference = stageReferenceOf(frame.integrator);
-  if (!reference)
-    throw PathwayError("no reference of " + frame.integrator + " is built into this program");
+  if (!reference) throw PathwayError(missingReferenceOf(frame.integrator));
   RenderRecipe recipe;
   recipe.integrator = reference->name;
   recipe.params = frame.params;  // the stage's parameters are declared once, for both variants

@@ -15,15 +15,18 @@
 
 namespace pathway {
 
-// The reference integrator of `integrator`'s stage, or null when it is not built in (a handout).
+// The reference integrator of `integrator`'s stage, or null when there is none (not a course
+// stage, or a handout whose reference library was refused).
 const IntegratorInfo* stageReferenceOf(const std::string& integrator);
+// Why stageReferenceOf(integrator) is null, in a sentence: "no reference of stage2 here (...)".
+std::string missingReferenceOf(const std::string& integrator);
 
 // The seed of a reference made for a pane with `seed`: its samples are not the pane's.
 uint64_t referenceSeed(uint64_t seed);
 
 // Renders stageN@ref for `frame` with `spp` samples per pixel, `samplesPerPass` at a time, and
 // referenceSeed(the frame's seed). Blocking: run it off the UI thread.
-// Returns nothing when `cancel` became true; throws PathwayError when no reference is built in.
+// Returns nothing when `cancel` became true; throws PathwayError when there is no reference.
 std::optional<RenderResult> renderStageReference(
     const LaneFrame& frame, const LoadedScene& scene, uint32_t spp, uint32_t samplesPerPass,
     const std::function<void(const RenderStats&)>& onPass = {},

@@ -6,9 +6,9 @@
 #include <filesystem>
 
 #include "core/error.h"
-#include "render/reference_library.h"
 #include "viewer/frame_metadata.h"
 #include "viewer/shortcuts.h"
+#include "viewer/stage_reference.h"
 
 namespace pathway {
 namespace {
@@ -128,10 +128,9 @@ void Viewer::toggleGrade() {
   if (!canGradeFrame(*frame)) {
     FrameGrade unavailable;
     unavailable.job = frame->job;
-    unavailable.error = "cannot grade " + frame->integrator +
-                        (frame->error.empty() ? ": it has no reference here (" +
-                                                    loadReferenceStages().describe() + ")"
-                                              : ": it did not render");
+    unavailable.error = frame->error.empty()
+                            ? "cannot grade: " + missingReferenceOf(frame->integrator)
+                            : "cannot grade " + frame->integrator + ": it did not render";
     grade_ = unavailable;
     return;
   }
