@@ -15,7 +15,7 @@ std::vector<CaseLine> caseLines(const std::string& json) {
       return line.substr(from, line.find('"', from) - from);
     };
     const size_t output = line.find("\"output\": \"");
-    lines.push_back({field("name"), field("status"), field("image"),
+    lines.push_back({field("name"), field("status"), field("image"), field("likely_cause"),
                      output == std::string::npos ? "" : line.substr(output)});
   }
   return lines;

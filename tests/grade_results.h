@@ -12,6 +12,7 @@ struct CaseLine {
   std::string name;    // "Stage 2 · ceiling"
   std::string status;  // "passed" or "failed"
   std::string image;   // extra_data.image: "pass", "fail" or "none"
+  std::string cause;   // extra_data.likely_cause: "" or "scale", "edges", ...
   std::string output;  // from "output" to the end of the line
 };
 

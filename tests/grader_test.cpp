@@ -4,10 +4,12 @@
 // input gets one message and a failed result. Output: results.json and an HTML report.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "grade/stage_grading.h"
 #include "grade_results.h"
 #include "io/image_io.h"
 #include "run_command.h"
@@ -52,7 +54,7 @@ TEST_F(Grader, TheReferenceStagesPassWithFreshSeeds) {
   size_t pictures = 0;
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir_ / "report/images"))
     ++pictures;
-  EXPECT_EQ(pictures, 4 * lines.size());
+  EXPECT_EQ(pictures, 5 * lines.size());
   const std::string page = test::readTextFile((dir_ / "report/index.html").string());
   EXPECT_NE(page.find("stage3-corner-z.png"), std::string::npos);
   EXPECT_NE(page.find("worst tile p"), std::string::npos);
@@ -88,12 +90,12 @@ TEST_F(Grader, BadInputGetsOneMessageAndAFailedResult) {
       grade("--grade-reference --stage 1 --references " + references.string());
   EXPECT_EQ(outcome.exitCode, 1) << outcome.output;
   const std::vector<ResultLine> lines = results();
-  ASSERT_EQ(lines.size(), 4u);
+  ASSERT_EQ(lines.size(), 5u);  // cornell-box, edges-tent, -mitchell, -mitchell-profile, -gaussian
   for (const ResultLine& line : lines) EXPECT_EQ(line.status, "failed");
   EXPECT_NE(lines[0].output.find("stage1-cornell-box.exr"), std::string::npos) << lines[0].output;
   EXPECT_NE(lines[2].output.find("stage1-edges-mitchell.exr"), std::string::npos)
       << lines[2].output;
-  EXPECT_NE(lines[3].output.find("other settings"), std::string::npos) << lines[3].output;
+  EXPECT_NE(lines[4].output.find("other settings"), std::string::npos) << lines[4].output;
   EXPECT_EQ(outcome.output.find("internal error"), std::string::npos) << outcome.output;
 
   // Two files of different sizes compared directly.
@@ -124,6 +126,26 @@ TEST_F(Grader, TwoRendersCompareDirectlyThroughTheirVariances) {
   EXPECT_NE(results().at(0).output.find("other settings (params"), std::string::npos);
 }
 
+TEST(CasePoints, AddUpToTheStageExactlyInWholeHundredths) {
+  for (int count = 1; count <= 12; ++count) {
+    long total = 0, smallest = 1 << 30, largest = 0;
+    for (int i = 0; i < count; ++i) {
+      const double points = casePoints(i, count);
+      const long hundredths = std::lround(100.0 * points);
+      EXPECT_NEAR(points, hundredths / 100.0, 1e-12) << "case " << i << " of " << count;
+      total += hundredths;
+      smallest = std::min(smallest, hundredths);
+      largest = std::max(largest, hundredths);
+    }
+    EXPECT_EQ(total, std::lround(100.0 * kPointsPerStage)) << count << " cases";
+    EXPECT_LE(largest - smallest, 1) << count << " cases";
+  }
+  // Summed as hundredths: three cases of 20/3 make 20.00, not 19.999...
+  GradeSummary summary;
+  for (int i = 0; i < 3; ++i) summary.cases.emplace_back().points = casePoints(i, 3);
+  EXPECT_EQ(summary.points(), kPointsPerStage);
+}
+
 // ---- The mutant suite (tests/mutants/CMakeLists.txt) ----
 #ifdef PATHWAY_MUTANT_LIST
 
@@ -131,6 +153,7 @@ struct Mutant {
   std::string name;
   int stage = 0;
   std::string expect;  // fail, pass, crash or hang
+  std::string cause;   // for fail: the likely cause the bug should read as (scripts/mutant-causes)
   std::string library;
   std::string description;
 };
@@ -142,8 +165,11 @@ std::vector<Mutant> mutants() {
     std::vector<std::string> fields;
     std::stringstream parts(line);
     for (std::string field; std::getline(parts, field, '|');) fields.push_back(field);
-    if (fields.size() == 5)
-      list.push_back({fields[0], std::stoi(fields[1]), fields[2], fields[3], fields[4]});
+    if (fields.size() != 5) continue;
+    const size_t colon = fields[2].find(':');
+    list.push_back({fields[0], std::stoi(fields[1]), fields[2].substr(0, colon),
+                    colon == std::string::npos ? "" : fields[2].substr(colon + 1), fields[3],
+                    fields[4]});
   }
   return list;
 }
@@ -164,6 +190,10 @@ TEST_P(GraderMutant, IsJudgedByItsImage) {
   ASSERT_FALSE(lines.empty()) << outcome.output;
   size_t failed = 0, imageFailed = 0, crashed = 0, timedOut = 0;
   for (const ResultLine& line : lines) {
+    // A likely cause exactly where an image was compared and failed: never on a passing case.
+    const bool wrongImage = line.image == "fail" && line.status == "failed";
+    EXPECT_EQ(!line.cause.empty(), wrongImage) << line.name << ": " << line.output;
+    EXPECT_EQ(line.output.find("likely cause: ") != std::string::npos, wrongImage) << line.name;
     failed += line.status == "failed";
     imageFailed += line.image == "fail";
     crashed += line.output.find("crashed (signal") != std::string::npos;
@@ -185,12 +215,24 @@ TEST_P(GraderMutant, IsJudgedByItsImage) {
     EXPECT_EQ(crashed, 1u) << test::readTextFile((dir_ / "report/results.json").string());
     EXPECT_EQ(failed, 1u);
     EXPECT_EQ(lines.size(), 3u);
+    // The message names the case, its settings and the pixel, and what the stage printed.
+    for (const ResultLine& line : lines)
+      if (line.status == "failed") {
+        EXPECT_NE(line.output.find("in case stage2-ceiling (ceiling.gltf, 64x64, 8 spp)"),
+                  std::string::npos)
+            << line.output;
+        EXPECT_NE(line.output.find("while rendering pixel"), std::string::npos) << line.output;
+        EXPECT_NE(line.output.find("it printed nothing before it stopped"), std::string::npos)
+            << line.output;
+      }
   } else {
     // Every case of the stage fails with the reason; the grader itself finishes.
     EXPECT_EQ(outcome.exitCode, 1);
     EXPECT_EQ(failed, lines.size());
     EXPECT_EQ(mutant.expect == "crash" ? crashed : timedOut, lines.size())
         << test::readTextFile((dir_ / "report/results.json").string());
+    for (const ResultLine& line : lines)
+      EXPECT_NE(line.output.find("while rendering pixel"), std::string::npos) << line.output;
   }
 
   // A handout's self-grade runs on the compiled reference library (render/reference_library.h)

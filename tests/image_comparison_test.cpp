@@ -104,6 +104,29 @@ TEST(ImageComparison, ASmallBiasEverywhereFailsTheOmnibusTest) {
   EXPECT_EQ(result.failingTiles, 0u);
   EXPECT_LT(result.omnibusP, settings.omnibusAlpha) << result.describe(settings);
   EXPECT_FALSE(result.passed(settings));
+  // Said in words, not as "no tile differs" beside a failure; each block's z is kept for its map.
+  EXPECT_NE(result.describe(settings).find("small and spread over the whole image"),
+            std::string::npos)
+      << result.describe(settings);
+  ASSERT_EQ(result.blocks.size(), 64u);
+  double meanZ = 0.0;
+  for (const TileVerdict& block : result.blocks) meanZ += block.z.x / 64.0;
+  EXPECT_GT(meanZ, 0.4);  // 0.8 expected
+}
+
+TEST(ImageComparison, CappedPValuesReadAsAboveNinetyNine) {
+  const Reference reference = makeReference();
+  const ComparisonSettings settings;
+  int capped = 0;  // Bonferroni over six tests caps p at 1 about half the time
+  for (uint64_t seed = 9; seed < 40; ++seed) {
+    const Comparison result = compare(noisyRender(seed), reference);
+    const std::string text = result.describe(settings);
+    EXPECT_EQ(text.find("p = 1 "), std::string::npos) << text;
+    if (result.omnibusP <= 0.99) continue;
+    ++capped;
+    EXPECT_NE(text.find("omnibus p > 0.99"), std::string::npos) << text;
+  }
+  EXPECT_GT(capped, 0);
 }
 
 TEST(ImageComparison, BadImagesAreHardFailuresWithTheirOwnMessages) {

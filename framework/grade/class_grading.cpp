@@ -17,6 +17,35 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// "stage 2", "stages 2 and 4", "stages 1, 2 and 5".
+std::string stageList(const std::set<int>& stages) {
+  std::string text = stages.size() == 1 ? "stage " : "stages ";
+  size_t i = 0;
+  for (int stage : stages) {
+    if (i > 0) text += i + 1 == stages.size() ? " and " : ", ";
+    text += std::to_string(stage);
+    ++i;
+  }
+  return text;
+}
+
+// The distinct likely causes of each stage's failing cases.
+std::string likelyCauses(const GradeSummary& summary) {
+  std::map<int, std::vector<std::string>> causes;
+  for (const CaseResult& c : summary.cases) {
+    if (!c.diagnosis) continue;
+    std::vector<std::string>& list = causes[c.stage];
+    const std::string name = likelyCauseName(c.diagnosis->cause);
+    if (std::find(list.begin(), list.end(), name) == list.end()) list.push_back(name);
+  }
+  std::string text;
+  for (const auto& [stage, list] : causes) {
+    text += (text.empty() ? "stage " : "; stage ") + std::to_string(stage) + ":";
+    for (size_t i = 0; i < list.size(); ++i) text += (i ? ", " : " ") + list[i];
+  }
+  return text;
+}
+
 // Every case of the run failed for one reason (the submission did not build, a file is missing).
 // The submission's name: its folder's, also for "alice/" and "./alice".
 std::string submissionName(const std::string& folder) {
@@ -54,7 +83,7 @@ void writeRow(const fs::path& path, const SubmissionResult& row) {
   for (size_t stage = 0; stage < row.stagePoints.size(); ++stage)
     out << "stage" << stage + 1 << "\t" << row.stagePoints[stage] << "\n";
   out << "buildSeconds\t" << row.buildSeconds << "\ngradeSeconds\t" << row.gradeSeconds
-      << "\nstatus\t" << status << "\n";
+      << "\nstatus\t" << status << "\ncauses\t" << row.causes << "\n";
 }
 
 bool readRow(const fs::path& path, SubmissionResult& row) {
@@ -75,6 +104,7 @@ bool readRow(const fs::path& path, SubmissionResult& row) {
   row.buildSeconds = std::atof(fields["buildSeconds"].c_str());
   row.gradeSeconds = std::atof(fields["gradeSeconds"].c_str());
   row.status = fields["status"];
+  row.causes = fields["causes"];
   return true;
 }
 
@@ -123,20 +153,31 @@ SubmissionResult gradeSubmission(const std::string& folder, const std::string& o
     }
     summary.notes = notes;
     row.gradeSeconds = summary.seconds;
-    row.status = "graded";
+    std::set<int> crashed, timedOut, uncompiled;
     for (const CaseResult& c : summary.cases) {
-      if (c.crashed) row.status = "graded; a stage crashed";
-      if (c.timedOut) row.status = "graded; a stage ran past its time limit";
+      if (c.crashed) crashed.insert(c.stage);
+      if (c.timedOut) timedOut.insert(c.stage);
     }
     for (const auto& [stage, cases] : broken) {
       const StageBuild& failed = build.stages.at(stage);
-      failCases(summary, cases, failed.problem + ":\n" + failed.log);
-      row.status = "graded; a stage file did not compile";
+      // The compiler's message once, for the whole stage; each case says where to find it.
+      summary.notes.push_back("stage " + std::to_string(stage) + ": " + failed.problem + ":\n" +
+                              failed.log);
+      failCases(summary, cases,
+                failed.problem + " (the compiler's message is at the top of the report)");
+      uncompiled.insert(stage);
     }
+    row.status = "graded";
+    if (!uncompiled.empty()) row.status += "; " + stageList(uncompiled) + " did not compile";
+    if (!crashed.empty()) row.status += "; " + stageList(crashed) + " crashed";
+    if (!timedOut.empty()) row.status += "; " + stageList(timedOut) + " ran past the time limit";
     if (!missing.empty()) {
       failCases(summary, missing, "the stage's file is missing from the submission");
-      if (row.status == "graded") row.status = "graded; files missing";
+      std::set<int> stages;
+      for (const GradingCase* c : missing) stages.insert(c->stage);
+      row.status += "; " + stageList(stages) + (stages.size() == 1 ? " is" : " are") + " missing";
     }
+    row.causes = likelyCauses(summary);
   } catch (const std::exception& error) {
     // Never stops the others: the submission gets the reason, and no points.
     row.status = std::string("could not be graded: ") + error.what();
@@ -168,15 +209,15 @@ void writeClassTable(const ClassGrading& grading, const std::vector<SubmissionRe
   std::ofstream csv(fs::path(grading.output) / "class.csv");
   csv << "submission,points,max";
   for (int stage = 1; stage <= kStageCount; ++stage) csv << ",stage" << stage;
-  csv << ",build_seconds,grade_seconds,status\n";
+  csv << ",build_seconds,grade_seconds,status,likely_causes\n";
   std::ofstream html(fs::path(grading.output) / "index.html");
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Pathway: class "
           "grades</title>\n<style>body{font-family:sans-serif;margin:2em}"
-          "td,th{padding:2px 10px;text-align:right}td:first-child,th:first-child,td:last-child"
+          "td,th{padding:2px 10px;text-align:right}td:first-child,th:first-child,td:nth-last-child(-n+2)"
           "{text-align:left}</style></head><body>\n<h1>Class grades</h1>\n<table><tr><th>"
           "submission</th><th>points</th>";
   for (int stage = 1; stage <= kStageCount; ++stage) html << "<th>stage " << stage << "</th>";
-  html << "<th>build s</th><th>grade s</th><th>status</th></tr>\n";
+  html << "<th>build s</th><th>grade s</th><th>status</th><th>likely causes</th></tr>\n";
   for (const SubmissionResult& r : rows) {
     char numbers[64];
     std::snprintf(numbers, sizeof numbers, "%.1f,%.1f", r.points, r.maxPoints);
@@ -191,10 +232,11 @@ void writeClassTable(const ClassGrading& grading, const std::vector<SubmissionRe
       html << "<td>" << numbers << "</td>";
     }
     std::snprintf(numbers, sizeof numbers, "%.1f,%.1f", r.buildSeconds, r.gradeSeconds);
-    csv << "," << numbers << "," << csvField(r.status) << "\n";
+    csv << "," << numbers << "," << csvField(r.status) << "," << csvField(r.causes) << "\n";
     std::snprintf(numbers, sizeof numbers, "<td>%.1f</td><td>%.1f</td>", r.buildSeconds,
                   r.gradeSeconds);
-    html << numbers << "<td>" << escapeHtml(r.status) << "</td></tr>\n";
+    html << numbers << "<td>" << escapeHtml(r.status) << "</td><td>" << escapeHtml(r.causes)
+         << "</td></tr>\n";
   }
   html << "</table></body></html>\n";
 }

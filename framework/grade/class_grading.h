@@ -24,7 +24,8 @@ struct SubmissionResult {
   double points = 0.0, maxPoints = 0.0;
   std::vector<double> stagePoints;  // index 0 is stage 1
   double buildSeconds = 0.0, gradeSeconds = 0.0;
-  std::string status;  // "graded", "did not compile", ...
+  std::string status;  // "graded", "graded; stage 2 did not compile; stage 4 crashed", ...
+  std::string causes;  // likely causes of the failing cases: "stage 2: scale; stage 5: lit, local"
 };
 
 std::vector<SubmissionResult> gradeClass(const ClassGrading& grading,

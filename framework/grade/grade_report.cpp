@@ -66,6 +66,13 @@ std::string general(double value) {
   return out.str();
 }
 
+// Capped p-values (Bonferroni, Šidák) read "> 0.99", not "1".
+std::string pValue(double p) { return p > 0.99 ? "&gt; 0.99" : general(p); }
+
+const char* causeOf(const CaseResult& c) {
+  return c.diagnosis ? likelyCauseName(c.diagnosis->cause) : "";
+}
+
 }  // namespace
 
 std::string CaseResult::describe(const ComparisonSettings& settings) const {
@@ -75,6 +82,7 @@ std::string CaseResult::describe(const ComparisonSettings& settings) const {
   if (!note.empty()) out << note << "\n";
   for (const std::string& todo : todos) out << "unfinished code ran: TODO at " << todo << "\n";
   if (compared) out << comparison.describe(settings);
+  if (diagnosis) out << diagnosis->line() << "\n";
   if (seconds > 0.0)
     out << "your render: " << fixed(seconds, 2) << " s, " << fixed(raysPerSecond * 1e-6, 1)
         << " M rays/s; the reference: " << fixed(referenceSeconds, 2) << " s, "
@@ -82,32 +90,34 @@ std::string CaseResult::describe(const ComparisonSettings& settings) const {
   return out.str();
 }
 
+// Points are whole hundredths (casePoints): summed as such, 6.67 + 6.67 + 6.66 is 20 exactly.
 double GradeSummary::points() const {
-  double sum = 0.0;
-  for (const CaseResult& c : cases) sum += c.points;
-  return sum;
+  long hundredths = 0;
+  for (const CaseResult& c : cases) hundredths += std::lround(100.0 * c.points);
+  return hundredths / 100.0;
 }
 
 double GradeSummary::maxPoints() const {
-  double sum = 0.0;
-  for (const CaseResult& c : cases) sum += c.maxPoints;
-  return sum;
+  long hundredths = 0;
+  for (const CaseResult& c : cases) hundredths += std::lround(100.0 * c.maxPoints);
+  return hundredths / 100.0;
 }
 
 bool GradeSummary::passed() const {
   return std::all_of(cases.begin(), cases.end(), [](const CaseResult& c) { return c.passed; });
 }
 
-Image zHeatmap(const Comparison& comparison) {
-  Image map(comparison.width, comparison.height);
-  // Colours saturate at the |z| where a tile fails.
-  const double zFail =
-      comparison.tileThresholdP > 0.0 ? -normalQuantile(0.5 * comparison.tileThresholdP) : 5.0;
-  for (const TileVerdict& tile : comparison.tiles) {
+namespace {
+
+// Each verdict's signed z (the channel farthest from 0) as colours, blue < 0 < red, saturating
+// at `zFull`; failing ones outlined in yellow.
+Image zMap(const std::vector<TileVerdict>& verdicts, int width, int height, double zFull) {
+  Image map(width, height);
+  for (const TileVerdict& tile : verdicts) {
     int channel = 0;
     for (int c = 1; c < 3; ++c)
       if (std::fabs(tile.z[c]) > std::fabs(tile.z[channel])) channel = c;
-    const Color colour = diverging(tile.z[channel] / zFail);
+    const Color colour = diverging(tile.z[channel] / zFull);
     for (int y = tile.y0; y < tile.y1; ++y) {
       for (int x = tile.x0; x < tile.x1; ++x) {
         const bool edge = x == tile.x0 || y == tile.y0 || x == tile.x1 - 1 || y == tile.y1 - 1;
@@ -116,6 +126,19 @@ Image zHeatmap(const Comparison& comparison) {
     }
   }
   return map;
+}
+
+}  // namespace
+
+Image zHeatmap(const Comparison& comparison) {
+  // Colours saturate at the |z| where a tile fails.
+  const double zFail =
+      comparison.tileThresholdP > 0.0 ? -normalQuantile(0.5 * comparison.tileThresholdP) : 5.0;
+  return zMap(comparison.tiles, comparison.width, comparison.height, zFail);
+}
+
+Image blockZHeatmap(const Comparison& comparison) {
+  return zMap(comparison.blocks, comparison.width, comparison.height, kBlockZFull);
 }
 
 Image differenceImage(const Image& image, const Image& reference) {
@@ -190,16 +213,16 @@ void writeHtmlReport(const std::string& folder, const GradeSummary& summary,
        << fixed(summary.seconds, 1) << " s</p>\n";
   for (const std::string& note : summary.notes) page << "<p>" << escapeHtml(note) << "</p>\n";
   page << "<table><tr><th>case</th><th>verdict</th><th>worst tile p</th><th>omnibus p</th>"
-       << "<th>your time</th><th>reference time</th></tr>\n";
+       << "<th>likely cause</th><th>your time</th><th>reference time</th></tr>\n";
   for (const CaseResult& c : summary.cases) {
     page << "<tr><td><a href=\"#" << escapeHtml(c.id) << "\">" << escapeHtml(c.title)
          << "</a></td><td class=\"" << (c.passed ? "pass\">pass" : "fail\">FAIL") << "</td><td>"
-         << (c.compared && c.comparison.hardFailures.empty() ? general(c.comparison.worstTileP)
+         << (c.compared && c.comparison.hardFailures.empty() ? pValue(c.comparison.worstTileP)
                                                              : "&ndash;")
          << "</td><td>"
-         << (c.compared && c.comparison.hardFailures.empty() ? general(c.comparison.omnibusP)
+         << (c.compared && c.comparison.hardFailures.empty() ? pValue(c.comparison.omnibusP)
                                                              : "&ndash;")
-         << "</td><td>" << (c.seconds > 0 ? fixed(c.seconds, 2) + " s" : "&ndash;") << "</td><td>"
+         << "</td><td>" << causeOf(c) << "</td><td>" << (c.seconds > 0 ? fixed(c.seconds, 2) + " s" : "&ndash;") << "</td><td>"
          << (c.referenceSeconds > 0 ? fixed(c.referenceSeconds, 2) + " s" : "&ndash;")
          << "</td></tr>\n";
   }
@@ -221,6 +244,9 @@ void writeHtmlReport(const std::string& folder, const GradeSummary& summary,
       if (!c.comparison.tiles.empty())
         figure("z", zHeatmap(c.comparison),
                "signed z per tile (blue: darker, red: brighter; yellow: failing)");
+      if (!c.comparison.blocks.empty())
+        figure("block-z", blockZHeatmap(c.comparison),
+               "signed z per block of the whole-image tests (full colour at |z| = 3)");
       if (c.image.width == c.reference.width && c.image.height == c.reference.height)
         figure("difference", differenceImage(c.image, c.reference),
                "difference (yours − reference)");
@@ -228,10 +254,10 @@ void writeHtmlReport(const std::string& folder, const GradeSummary& summary,
     page << "<pre>" << escapeHtml(c.describe(settings)) << "</pre>\n";
     if (c.compared && c.comparison.hardFailures.empty()) {
       const Comparison& k = c.comparison;
-      page << "<table><tr><td>worst tile p (corrected)</td><td>" << general(k.worstTileP)
+      page << "<table><tr><td>worst tile p (corrected)</td><td>" << pValue(k.worstTileP)
            << "</td></tr><tr><td>failing tiles</td><td>" << k.failingTiles << " of "
            << k.tiles.size() << "</td></tr><tr><td>omnibus p (corrected)</td><td>"
-           << general(k.omnibusP) << "</td></tr><tr><td>&Sigma;z&sup2; p per channel</td><td>"
+           << pValue(k.omnibusP) << "</td></tr><tr><td>&Sigma;z&sup2; p per channel</td><td>"
            << general(k.chiSquaredP[0]) << ", " << general(k.chiSquaredP[1]) << ", "
            << general(k.chiSquaredP[2]) << "</td></tr><tr><td>mean-shift p per channel</td><td>"
            << general(k.meanShiftP[0]) << ", " << general(k.meanShiftP[1]) << ", "
@@ -273,7 +299,8 @@ std::string gradescopeResults(const GradeSummary& summary, const ComparisonSetti
         << (!c.compared                     ? "none"
             : c.comparison.passed(settings) ? "pass"
                                             : "fail")
-        << "\", \"todos\": " << c.todos.size() << "}}";
+        << "\", \"likely_cause\": \"" << causeOf(c) << "\", \"todos\": " << c.todos.size()
+        << "}}";
   }
   out << "\n  ]\n}\n";
   return out.str();

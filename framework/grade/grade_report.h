@@ -4,9 +4,11 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "grade/difference_diagnosis.h"
 #include "grade/image_comparison.h"
 
 namespace pathway {
@@ -24,6 +26,8 @@ struct CaseResult {
   std::vector<std::string> todos;  // unfinished stage code that ran ("file:line")
   bool compared = false;           // `comparison` and the images below are filled in
   Comparison comparison;
+  // What kind of bug the failing image shows; only for an image that was compared and failed.
+  std::optional<Diagnosis> diagnosis;
   Image image, reference;
   double seconds = 0.0, raysPerSecond = 0.0;                    // the submission's render
   double referenceSeconds = 0.0, referenceRaysPerSecond = 0.0;  // one reference replicate
@@ -63,6 +67,10 @@ std::string escapeHtml(const std::string& text);
 // The signed z of each tile (the channel farthest from 0) as colours, blue < 0 < red, saturating
 // at the failure threshold, with failing tiles outlined in yellow. Linear RGB, image-sized.
 Image zHeatmap(const Comparison& comparison);
+// The same for the whole-image tests' blocks, saturating at |z| = kBlockZFull and never outlined:
+// it shows a difference spread too thinly for any tile to fail.
+constexpr double kBlockZFull = 3.0;
+Image blockZHeatmap(const Comparison& comparison);
 // image - reference in luminance, blue < 0 < red, scaled so the 99th percentile of |difference| is
 // full colour. Linear RGB.
 Image differenceImage(const Image& image, const Image& reference);

@@ -47,7 +47,7 @@ struct CaseBuilder {
 std::vector<GradingCase> declareCases() {
   using B = CaseBuilder;
   const B cases[] = {
-      // Stage 1: edges and flat regions under every filter; Mitchell at low spp.
+      // Stage 1: edges and flat regions under every filter; Mitchell at low spp and its profile.
       B(1, "cornell-box", "cornell_box.gltf",
         "a box stretched over neighbouring pixels: splat reach, half-pixel offsets")
           .filter(FilterType::Box, 0.75f)
@@ -63,6 +63,12 @@ std::vector<GradingCase> declareCases() {
           .filter(FilterType::MitchellNetravali)
           .size(96, 72)
           .spp(4)
+          .tiles(2),
+      B(1, "edges-mitchell-profile", "grading_edges.gltf",
+        "Mitchell-Netravali's profile on hard edges: each coefficient of both pieces")
+          .filter(FilterType::MitchellNetravali)
+          .size(96, 72)
+          .spp(16)
           .tiles(2),
       B(1, "edges-gaussian", "grading_edges.gltf",
         "Gaussian profile and cut-off at a stretched radius")
@@ -109,7 +115,8 @@ std::vector<GradingCase> declareCases() {
           .param("branching", "3")
           .param("depth", "1")
           .spp(8),
-      // Stage 5: NEE on and off, small and touching lights, one-sided emitters, background.
+      // Stage 5: NEE on and off, small and touching lights, one-sided emitters, background, both
+      // ways of picking an emitter.
       B(5, "cornell-box", "cornell_box.gltf", "path tracing with NEE and Russian roulette").spp(16),
       B(5, "cornell-box-no-nee", "cornell_box.gltf", "emission found by bounces, counted once")
           .param("nee", "off")
@@ -125,6 +132,9 @@ std::vector<GradingCase> declareCases() {
       B(5, "lights-area", "grading_lights.gltf",
         "emitters of different size and radiance, one seen from behind")
           .param("light-pick", "area")
+          .spp(32),
+      B(5, "lights-power", "grading_lights.gltf",
+        "emitters picked by power where power per area differs: the pdf of that picking")
           .spp(32),
   };
   std::vector<GradingCase> result;

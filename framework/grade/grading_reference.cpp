@@ -4,6 +4,8 @@
 #include <cstdlib>
 
 #include "core/error.h"
+#include "grade/difference_diagnosis.h"
+#include "grade/difference_patterns.h"
 #include "io/image_io.h"
 
 namespace pathway {
@@ -24,6 +26,7 @@ std::map<std::string, std::string> toMap(const ImageMetadata& metadata) {
 GradingReference makeGradingReference(const GradingCase& gradingCase, const RayTracer& tracer,
                                       const std::function<void(int)>& onReplicate) {
   std::vector<Image> replicates;
+  Image ownVariance;  // the replicates' own per-pixel variance estimates, summed
   GradingReference reference;
   double seconds = 0.0, rays = 0.0;
   for (int i = 0; i < kReferenceReplicates; ++i) {
@@ -37,6 +40,10 @@ GradingReference makeGradingReference(const GradingCase& gradingCase, const RayT
     if (i == 0) reference.metadata = toMap(result.metadata);
     seconds += result.stats.seconds;
     rays += static_cast<double>(result.stats.counters.totalRays());
+    if (ownVariance.pixels.empty()) ownVariance = Image(result.images.variance.width,
+                                                        result.images.variance.height);
+    for (size_t p = 0; p < ownVariance.pixels.size(); ++p)
+      ownVariance.pixels[p] += result.images.variance.pixels[p] / float(kReferenceReplicates);
     replicates.push_back(std::move(result.images.color));
     if (onReplicate) onReplicate(i + 1);
   }
@@ -47,6 +54,9 @@ GradingReference makeGradingReference(const GradingCase& gradingCase, const RayT
     reference.mean.pixels[p] = Color(sum / double(replicates.size()));
   }
   reference.tileVariance = replicateTileVariance(replicates, gradingCase.tileSize);
+  reference.patterns = makeDifferencePatterns(gradingCase, tracer, reference.mean);
+  if (!ownVariance.pixels.empty())
+    reference.patterns[pattern::kRenderVariance] = tileAveraged(ownVariance, gradingCase.tileSize);
   reference.blockSize = ComparisonSettings().omnibusBlockSize;
   reference.blockVariance = replicateTileVariance(replicates, reference.blockSize);
   reference.blockCorrelation = replicateBlockCorrelation(replicates, reference.blockSize);
@@ -76,11 +86,11 @@ void writeGradingReference(const std::string& path, const GradingReference& refe
   metadata.push_back(
       {"pathway:grading:secondsPerRender", std::to_string(reference.secondsPerRender)});
   metadata.push_back({"pathway:grading:raysPerSecond", std::to_string(reference.raysPerSecond)});
-  writeExrLayers(path,
-                 {{"", &reference.mean},
-                  {"tileVariance", &reference.tileVariance},
-                  {"blockVariance", &reference.blockVariance}},
-                 metadata);
+  std::map<std::string, const Image*> layers = {{"", &reference.mean},
+                                                {"tileVariance", &reference.tileVariance},
+                                                {"blockVariance", &reference.blockVariance}};
+  for (const auto& [name, image] : reference.patterns) layers[name] = &image;
+  writeExrLayers(path, layers, metadata);
 }
 
 GradingReference readGradingReference(const std::string& path) {
@@ -116,6 +126,8 @@ GradingReference readGradingReference(const std::string& path) {
   reference.mean = std::move(loaded.images.color);
   reference.tileVariance = std::move(loaded.layers["tileVariance"]);
   reference.blockVariance = std::move(loaded.layers["blockVariance"]);
+  for (auto& [name, image] : loaded.layers)
+    if (name.rfind("pattern.", 0) == 0) reference.patterns[name] = std::move(image);
   reference.metadata = std::move(loaded.metadata);
   return reference;
 }

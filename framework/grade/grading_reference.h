@@ -1,7 +1,7 @@
 // A grading reference: the mean of kReferenceReplicates independent reference renders of one
 // grading case at the submission's spp, and the variance of one such render's tile means (and of
 // its means over the omnibus tests' larger blocks), stored as an EXR (R, G, B = mean;
-// tileVariance.R/G/B; blockVariance.R/G/B) with the settings that made it in its metadata.
+// tileVariance.R/G/B; blockVariance.R/G/B; pattern.*.R/G/B) with the settings that made it in its metadata.
 #pragma once
 
 #include <functional>
@@ -25,6 +25,9 @@ struct GradingReference {
   double secondsPerRender = 0.0;  // of one replicate, the submission's workload
   double raysPerSecond = 0.0;
   std::map<std::string, std::string> metadata;  // "pathway:*"
+  // Masks for diagnosing a wrong image (difference_patterns.h), by layer name; references made
+  // before them have none.
+  std::map<std::string, Image> patterns;
 };
 
 // Renders the case's replicates with the reference stage; `onReplicate(done)` reports progress.

@@ -8,12 +8,6 @@
 #include "grade/statistics.h"
 
 namespace pathway {
-namespace {
-
-struct TileBounds {
-  int x0, y0, x1, y1;
-  double pixels() const { return double(x1 - x0) * (y1 - y0); }
-};
 
 std::vector<TileBounds> tilesOf(int width, int height, int tileSize) {
   std::vector<TileBounds> tiles;
@@ -30,6 +24,8 @@ glm::dvec3 tileMean(const Image& image, const TileBounds& t) {
   return sum / t.pixels();
 }
 
+namespace {
+
 // Σ var / n²: the variance of the tile mean when the pixels are independent.
 glm::dvec3 independentTileVariance(const Image& variance, const TileBounds& t) {
   return tileMean(variance, t) / t.pixels();
@@ -41,10 +37,19 @@ double mean(const Image& image) {
   return image.pixels.empty() ? 0.0 : sum / image.pixels.size();
 }
 
+// "p = 0.0123"; p-values capped at 1 (Bonferroni, Šidák) read "p > 0.99".
 std::string formatP(double p) {
+  if (p > 0.99) return "p > 0.99";
   std::ostringstream out;
   out.precision(3);
-  out << p;
+  out << "p = " << p;
+  return out.str();
+}
+
+std::string formatNumber(double value) {
+  std::ostringstream out;
+  out.precision(3);
+  out << value;
   return out.str();
 }
 
@@ -99,14 +104,19 @@ std::string Comparison::describe(const ComparisonSettings& settings) const {
   std::ostringstream out;
   for (const std::string& failure : hardFailures) out << failure << "\n";
   if (!hardFailures.empty()) return out.str();
+  const bool tilesFail = worstTileP < settings.tileAlpha;
+  const bool omnibusFails = omnibusP < settings.omnibusAlpha;
+  if (omnibusFails && !tilesFail)
+    out << "no single tile differs enough to fail on its own, but together they do: the "
+           "difference is small and spread over the whole image (see the map of block z)\n";
   out << (failingTiles > 0 ? std::to_string(failingTiles) + " of " : "no tile of ") << tiles.size()
       << " tiles (" << tileSize << "x" << tileSize
-      << " pixels) differ significantly; worst tile p = " << formatP(worstTileP)
+      << " pixels) differ significantly; worst tile " << formatP(worstTileP)
       << " after correction for " << 3 * tiles.size() << " tests (fails below "
-      << formatP(settings.tileAlpha) << ")\n";
-  out << "omnibus p = " << formatP(omnibusP) << " (fails below " << formatP(settings.omnibusAlpha)
-      << "); mean differs from the reference by " << formatP(100.0 * meanRelativeDifference)
-      << "%\n";
+      << formatNumber(settings.tileAlpha) << ")\n";
+  out << "whole image: omnibus " << formatP(omnibusP) << " (fails below "
+      << formatNumber(settings.omnibusAlpha) << "); mean differs from the reference by "
+      << formatNumber(100.0 * meanRelativeDifference) << "%\n";
   return out.str();
 }
 
@@ -182,6 +192,9 @@ Comparison compareImages(const ComparisonInput& input, const ComparisonSettings&
         unitStatistic(input, settings, result.degreesOfFreedom, b,
                       replicated && blocks ? input.blockVariance : input.tileVariance, false);
     const glm::dvec3 z = glm::clamp(unit.z, -settings.omnibusClamp, settings.omnibusClamp);
+    TileVerdict block{b.x0, b.y0, b.x1, b.y1};
+    block.z = Color(z);
+    result.blocks.push_back(block);
     sumZ += z;
     sumZ2 += z * z;
   }

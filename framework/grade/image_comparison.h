@@ -80,6 +80,7 @@ struct Comparison {
   double tileThresholdP = 0.0;     // a tile fails below this p (Šidák over tiles x 3)
   double worstTileP = 1.0;         // family-wise p of the most extreme tile
   size_t failingTiles = 0;
+  std::vector<TileVerdict> blocks;      // the omnibus tests' blocks, z only (clamped)
   double chiSquaredP[3] = {1, 1, 1};    // per channel, Σ z² ~ χ²(tiles)
   double meanShiftP[3] = {1, 1, 1};     // per channel, Σ z / sqrt(tiles) ~ N(0, 1)
   double omnibusP = 1.0;                // family-wise (Bonferroni over the six)
@@ -98,6 +99,15 @@ Comparison compareImages(const ComparisonInput& input, const ComparisonSettings&
 Image replicateTileVariance(const std::vector<Image>& replicates, int tileSize);
 // Var(Σ_blocks (m - mean) / sd) / blocks over the replicates, per channel (see blockCorrelation).
 glm::dvec3 replicateBlockCorrelation(const std::vector<Image>& replicates, int blockSize);
+
+// A tile: pixels [x0, x1) x [y0, y1).
+struct TileBounds {
+  int x0, y0, x1, y1;
+  double pixels() const { return double(x1 - x0) * (y1 - y0); }
+};
+// The image cut into tiles of `tileSize` (smaller at the right and bottom borders), row by row.
+std::vector<TileBounds> tilesOf(int width, int height, int tileSize);
+glm::dvec3 tileMean(const Image& image, const TileBounds& tile);
 
 // An upper bound on how much a filter of this radius (in pixels) inflates the variance of a sum
 // of pixels over the sum of their variances: the number of pixels one sample reaches.

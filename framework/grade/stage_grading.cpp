@@ -11,10 +11,12 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <sstream>
 
 #include "core/child_process.h"
 #include "core/error.h"
 #include "core/temporary_folder.h"
+#include "render/pixel_in_progress.h"
 #include "render/stage_library.h"
 #include "scene/gltf_loader.h"
 
@@ -45,6 +47,35 @@ struct RenderOutcome {
   bool timedOut = false;
   std::string problem;
 };
+
+// How much of a stopped child's output a message quotes: its last lines.
+constexpr int kQuotedOutputLines = 12;
+
+// "your stage crashed (signal 4, Illegal instruction) in case stage2-ceiling (ceiling.gltf, 64x64,
+// 8 spp) at pixel (12, 40); its last output: ..."
+std::string stopMessage(const ChildOutcome& child, const GradingCase& gradingCase, double limit) {
+  std::string message =
+      "your stage " +
+      (child.succeeded() ? std::string("stopped without writing its image") : child.describe(limit)) +
+      " in case " + gradingCase.id() + " (" + gradingCase.scene + ", " +
+      std::to_string(gradingCase.width) + "x" + std::to_string(gradingCase.height) + ", " +
+      std::to_string(gradingCase.spp) + " spp)";
+  const std::string pixels = pixelsInProgressFrom(child.output);
+  if (!pixels.empty())
+    message += (pixels.find("), (") != std::string::npos ? " while rendering pixels "
+                                                          : " while rendering pixel ") +
+               pixels;
+  // The child's own lines, without the one that named the pixel.
+  std::vector<std::string> lines;
+  std::istringstream in(child.output);
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty() && line.rfind("pathway: stopped by ", 0) != 0) lines.push_back(line);
+  if (lines.empty()) return message + "; it printed nothing before it stopped";
+  message += "; its last output:";
+  const size_t first = lines.size() > kQuotedOutputLines ? lines.size() - kQuotedOutputLines : 0;
+  for (size_t i = first; i < lines.size(); ++i) message += "\n  " + lines[i];
+  return message;
+}
 
 // The parent's own limit on a child, on top of its cases' limits: the child's alarms end it
 // first; this only catches a stage that blocks SIGALRM.
@@ -88,10 +119,7 @@ std::vector<RenderOutcome> renderInChildren(const std::vector<const GradingCase*
     RenderOutcome& failed = outcomes[next];
     failed.crashed = child.signal != 0;
     failed.timedOut = child.timedOut;
-    const std::string what =
-        child.succeeded() ? "stopped without writing its image" : child.describe(limits[next]);
-    failed.problem =
-        "your stage " + what + " while rendering " + cases[next]->scene + ":\n" + child.output;
+    failed.problem = stopMessage(child, *cases[next], limits[next]);
     ++next;
   }
   return outcomes;
@@ -138,6 +166,7 @@ void gradeCase(CaseResult& result, const GradingCase& gradingCase, const Grading
       CaseResult second = result;
       judgeAgainstReference(second, *again.image, reference, settings);
       result.passed = second.passed;
+      if (second.passed) result.diagnosis.reset();  // a chance failure has no cause
       result.note = second.passed
                         ? "the first render failed, but a second with seed " +
                               std::to_string(seed) + " passed: a chance failure, not counted"
@@ -177,6 +206,7 @@ void renderGradingCases(const std::vector<const GradingCase*>& cases,
                         const std::vector<double>& limits, const GradingRun& run,
                         const std::string& folder) {
   limitThisChild(64ull << 20);  // a render and its log need far less than 64 MiB
+  reportPixelsOnFatalSignals();
   if (limits.size() != cases.size())
     throw PathwayError("internal: " + std::to_string(cases.size()) + " cases but " +
                        std::to_string(limits.size()) + " time limits");
@@ -215,6 +245,18 @@ void judgeAgainstReference(CaseResult& result, const LoadedImage& render,
   result.passed = result.comparison.passed(settings);
   result.image = render.images.color;
   result.reference = reference.mean;
+  result.diagnosis.reset();
+  if (!result.passed && result.todos.empty()) {
+    DiagnosisInput input;
+    input.image = &result.image;
+    input.reference = &reference.mean;
+    input.tileVariance = &reference.tileVariance;
+    if (!render.images.variance.pixels.empty()) input.imageVariance = &render.images.variance;
+    input.replicates = reference.replicates;
+    input.tileSize = reference.tileSize;
+    for (const auto& [name, image] : reference.patterns) input.patterns[name] = &image;
+    result.diagnosis = diagnoseDifference(input, result.comparison, settings);
+  }
   if (!result.todos.empty()) {
     // A placeholder can be right by chance (the box filter's is); unfinished work never passes.
     result.passed = false;
@@ -223,8 +265,9 @@ void judgeAgainstReference(CaseResult& result, const LoadedImage& render,
 }
 
 double casePoints(int index, int count) {
-  const double share = std::round(100.0 * kPointsPerStage / count) / 100.0;
-  return index + 1 < count ? share : kPointsPerStage - share * (count - 1);
+  // Whole hundredths: the first (total mod count) cases take one hundredth more.
+  const long total = std::lround(100.0 * kPointsPerStage);
+  return static_cast<double>(total / count + (index < total % count ? 1 : 0)) / 100.0;
 }
 
 GradeSummary gradeStages(const GradingRun& run, const ComparisonSettings& settings) {

@@ -35,8 +35,8 @@ struct GradingRun {
   bool progress = true;  // one line per case on stderr
 };
 
-// The points of case `index` of a stage's `count` cases: kPointsPerStage split evenly, to a
-// hundredth, the last case taking the remainder so that they add up exactly.
+// The points of case `index` of a stage's `count` cases: kPointsPerStage split into whole
+// hundredths that differ by at most one and add up to it exactly (20/3: 6.67, 6.67, 6.66).
 double casePoints(int index, int count);
 
 // Grades every case of the run; never throws for a case (its problem is in its result).

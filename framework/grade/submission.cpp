@@ -48,6 +48,19 @@ Submission findSubmission(const std::string& folder) {
   return submission;
 }
 
+namespace {
+
+std::string withoutPrefixes(std::string text, const std::vector<std::string>& prefixes) {
+  for (const std::string& prefix : prefixes) {
+    if (prefix.size() <= 1) continue;
+    for (size_t at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at))
+      text.erase(at, prefix.size());
+  }
+  return text;
+}
+
+}  // namespace
+
 SubmissionBuild buildSubmission(const Submission& submission, const std::string& buildFolder,
                                 double timeLimit) {
   SubmissionBuild build;
@@ -67,7 +80,12 @@ SubmissionBuild buildSubmission(const Submission& submission, const std::string&
     const ChildOutcome outcome =
         runChild(command, timeLimit, buildFolder + "/" + name + "-build.log");
     build.seconds += outcome.seconds;
-    result.log = outcome.output;
+    // Paths on the grading machine mean nothing to the student: the compiler's message names
+    // files by their names in the submission and the framework.
+    result.log = withoutPrefixes(outcome.output,
+                                 {fs::absolute(submission.folder).lexically_normal().string() + "/",
+                                  submission.folder + "/", std::string(PATHWAY_SOURCE_DIR) + "/",
+                                  fs::absolute(buildFolder).lexically_normal().string() + "/"});
     result.succeeded = outcome.succeeded() && fs::exists(result.library);
     if (!result.succeeded)
       result.problem = fs::path(file).filename().string() + " did not compile: the compiler " +

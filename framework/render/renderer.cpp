@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "render/pixel_in_progress.h"
 
 namespace pathway {
 
@@ -78,7 +79,8 @@ void Renderer::renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount
   for (int y = tile.y0; y < tile.y1; ++y) {
     for (int x = tile.x0; x < tile.x1; ++x, ++pixelRays) {
       // Checked per pixel, so even a pass of many samples per pixel stops promptly.
-      if (cancel && cancel->load(std::memory_order_relaxed)) return;
+      if (cancel && cancel->load(std::memory_order_relaxed)) return clearPixelInProgress();
+      recordPixelInProgress(x, y);
       const uint64_t raysBefore = tile.counters.totalRays();
       const uint64_t pixelKey = sampler_.pixelKey(x, y);
       for (uint32_t index = firstSample; index < firstSample + sampleCount; ++index) {
@@ -96,6 +98,7 @@ void Renderer::renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount
       *pixelRays = tile.counters.totalRays() - raysBefore;
     }
   }
+  clearPixelInProgress();
 }
 
 bool Renderer::renderPass(const std::atomic<bool>* cancel) {

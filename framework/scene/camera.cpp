@@ -40,6 +40,12 @@ void Camera::setup(const Vec3& position, const Vec3& forward, const Vec3& up, fl
   pixelDown_ = (-2.0f * halfHeight / static_cast<float>(height)) * up_;
 }
 
+Camera Camera::withImageMoved(Vec2 pixels) const {
+  Camera moved = *this;
+  moved.topLeft_ -= pixels.x * pixelRight_ + pixels.y * pixelDown_;
+  return moved;
+}
+
 Ray Camera::generateRay(Vec2 filmPosition) const {
   const Vec3 direction = topLeft_ + filmPosition.x * pixelRight_ + filmPosition.y * pixelDown_;
   return Ray{position_, glm::normalize(direction), kInfinity};

@@ -18,6 +18,10 @@ class Camera {
   // [i, i+1) x [j, j+1) and has its centre at (i + 0.5, j + 0.5).
   Ray generateRay(Vec2 filmPosition) const;
 
+  // The same camera with its image moved by `pixels` (right, down): pixel p then shows what
+  // p - pixels showed. The grader renders it to see what a misplaced pixel centre looks like.
+  Camera withImageMoved(Vec2 pixels) const;
+
   Vec3 position() const { return position_; }
   Vec3 forward() const { return forward_; }
   float yfov() const { return yfov_; }

@@ -1,0 +1,128 @@
+#include "grade/difference_patterns.h"
+
+#include "grade/difference_diagnosis.h"
+#include "grade/image_comparison.h"
+#include "scene/camera.h"
+
+namespace pathway {
+namespace {
+
+// The patterns only need to be clearer than one submission's render: this many times its samples.
+constexpr uint32_t kPatternSppFactor = 8;
+// Camera rays per pixel side for the escaped share.
+constexpr int kEscapeRaysPerSide = 4;
+// Seeds of the pattern renders: apart from the replicates' (kReferenceSeed + i).
+constexpr uint64_t kPatternSeed = kReferenceSeed + 500000;
+
+Image renderVariant(const GradingCase& gradingCase, const RayTracer& tracer,
+                    const std::map<std::string, std::string>& params, uint64_t seed,
+                    Vec2 imageMoved = Vec2(0.0f)) {
+  GradingCase variant = gradingCase;
+  for (const auto& [name, value] : params) variant.params[name] = value;
+  variant.spp *= kPatternSppFactor;
+  const Camera camera =
+      Camera(tracer.scene(), variant.width, variant.height).withImageMoved(imageMoved);
+  return runRender(tracer, camera, variant.recipe(Variant::Reference, EarlierStages::Own, seed))
+      .images.color;
+}
+
+Image difference(const Image& a, const Image& b) {
+  Image result = a;
+  for (size_t p = 0; p < result.pixels.size(); ++p) result.pixels[p] -= b.pixels[p];
+  return result;
+}
+
+bool isZero(const Image& image) {
+  for (const Color& c : image.pixels)
+    if (c.x != 0.0f || c.y != 0.0f || c.z != 0.0f) return false;
+  return true;
+}
+
+Image escapedBackground(const GradingCase& gradingCase, const RayTracer& tracer) {
+  const Camera camera(tracer.scene(), gradingCase.width, gradingCase.height);
+  RayCounters counters;
+  Image result(gradingCase.width, gradingCase.height);
+  const float share = 1.0f / (kEscapeRaysPerSide * kEscapeRaysPerSide);
+  for (int y = 0; y < result.height; ++y)
+    for (int x = 0; x < result.width; ++x)
+      for (int j = 0; j < kEscapeRaysPerSide; ++j)
+        for (int i = 0; i < kEscapeRaysPerSide; ++i) {
+          const Vec2 film(x + (i + 0.5f) / kEscapeRaysPerSide, y + (j + 0.5f) / kEscapeRaysPerSide);
+          if (!tracer.intersect(camera.generateRay(film), RayKind::Primary, counters))
+            result.at(x, y) += share * tracer.scene().background;
+        }
+  return result;
+}
+
+}  // namespace
+
+Image tileAveraged(const Image& image, int tileSize) {
+  Image result(image.width, image.height);
+  for (const TileBounds& t : tilesOf(image.width, image.height, tileSize)) {
+    const Color mean(tileMean(image, t));
+    for (int y = t.y0; y < t.y1; ++y)
+      for (int x = t.x0; x < t.x1; ++x) result.at(x, y) = mean;
+  }
+  return result;
+}
+
+std::map<std::string, Image> makeDifferencePatterns(const GradingCase& gradingCase,
+                                                    const RayTracer& tracer,
+                                                    const Image& referenceMean) {
+  std::map<std::string, Image> patterns;
+  patterns[pattern::kEscaped] = escapedBackground(gradingCase, tracer);
+  const uint64_t seed = kPatternSeed;
+  if (gradingCase.stage == 1) {
+    // Central differences half a pixel each way: the image moved by one pixel, to first order,
+    // at the scale where filters act (a pixel-level gradient misreads fine stripes).
+    const float half = 0.5f;
+    patterns[pattern::kMovedRight] =
+        difference(renderVariant(gradingCase, tracer, {}, seed, Vec2(half, 0.0f)),
+                   renderVariant(gradingCase, tracer, {}, seed + 1, Vec2(-half, 0.0f)));
+    patterns[pattern::kMovedDown] =
+        difference(renderVariant(gradingCase, tracer, {}, seed + 2, Vec2(0.0f, half)),
+                   renderVariant(gradingCase, tracer, {}, seed + 3, Vec2(0.0f, -half)));
+    // The filter a quarter wider minus a fifth narrower: its support, to first order in ln r.
+    const float radius = gradingCase.filterRadius > 0.0f ? gradingCase.filterRadius
+                                                         : naturalFilterRadius(gradingCase.filter);
+    GradingCase wider = gradingCase, narrower = gradingCase;
+    wider.filterRadius = 1.25f * radius;
+    narrower.filterRadius = 0.8f * radius;
+    patterns[pattern::kWiderFilter] = difference(renderVariant(wider, tracer, {}, seed + 4),
+                                                 renderVariant(narrower, tracer, {}, seed + 5));
+  } else if (gradingCase.stage == 2 || gradingCase.stage == 3) {
+    // The smallest AO distance there is: nothing blocks such a ray, so this is the image without
+    // occlusion (1 on every surface, the background elsewhere).
+    const Image unoccluded = renderVariant(gradingCase, tracer, {{"ao-distance", "1e-6"}}, seed);
+    patterns[pattern::kOccluded] = difference(unoccluded, referenceMean);
+    // The same AO with longer rays: how the image changes when the AO distance is misread.
+    const double d =
+        gradingCase.recipe(Variant::Reference, EarlierStages::Own, seed).params.real("ao-distance");
+    if (d < 1e5) {
+      patterns[pattern::kLongerRays] = difference(
+          renderVariant(gradingCase, tracer, {{"ao-distance", std::to_string(2.0 * d)}}, seed + 1),
+          referenceMean);
+      patterns[pattern::kUnlimitedRays] = difference(
+          renderVariant(gradingCase, tracer, {{"ao-distance", "1e6"}}, seed + 2), referenceMean);
+    }
+  } else if (gradingCase.stage == 4 || gradingCase.stage == 5) {
+    const std::string depth = gradingCase.stage == 4 ? "depth" : "max-depth";
+    // NEE leaves the expected image as it is and makes these two far less noisy.
+    std::map<std::string, std::string> emitted = {{depth, "0"}}, direct = {{depth, "1"}};
+    if (gradingCase.stage == 5) emitted["nee"] = direct["nee"] = "on";
+    const Image m0 = renderVariant(gradingCase, tracer, emitted, seed);
+    const Image m1 = renderVariant(gradingCase, tracer, direct, seed + 1);
+    patterns[pattern::kDirect] = difference(m1, m0);
+    const auto depthParam = gradingCase.params.find(depth);
+    const bool bounces = depthParam == gradingCase.params.end() || depthParam->second != "1";
+    if (bounces) patterns[pattern::kIndirect] = difference(referenceMean, m1);
+  }
+  for (auto it = patterns.begin(); it != patterns.end();)
+    it = isZero(it->second) ? patterns.erase(it) : std::next(it);
+  // The diagnosis reads patterns tile by tile: stored as tile means, they cost the reference
+  // file next to nothing (ZIP shrinks constant runs), where noisy pixels would double it.
+  for (auto& [name, image] : patterns) image = tileAveraged(image, gradingCase.tileSize);
+  return patterns;
+}
+
+}  // namespace pathway

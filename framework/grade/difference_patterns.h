@@ -1,0 +1,30 @@
+// The masks a grading reference stores beside its mean so that the grader can say where a wrong
+// image differs (difference_diagnosis.h): they are made with the reference stages, once, when the
+// references are made.
+//   - pattern.escaped (every stage): the background, weighted by the share of camera rays that
+//     leave the scene through each pixel;
+//   - pattern.occluded (stages 2, 3): the same AO with rays too short to be blocked, minus the
+//     reference: how much each pixel is occluded;
+//   - pattern.direct and pattern.indirect (stages 4, 5): the case at depth 1 minus depth 0 (light
+//     one bounce from the emitters), and the reference minus depth 1 (light after more bounces).
+// A pattern that is zero everywhere (no background; a case of depth 1 has no indirect light) is
+// left out; the others are stored as tile means (the diagnosis reads no finer).
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "film/film.h"
+#include "grade/grading_cases.h"
+#include "scene/ray_tracer.h"
+
+namespace pathway {
+
+// Every tile's pixels replaced by the tile's mean: how the patterns are stored.
+Image tileAveraged(const Image& image, int tileSize);
+
+std::map<std::string, Image> makeDifferencePatterns(const GradingCase& gradingCase,
+                                                    const RayTracer& tracer,
+                                                    const Image& referenceMean);
+
+}  // namespace pathway

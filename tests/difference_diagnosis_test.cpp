@@ -1,0 +1,174 @@
+// The grader's diagnosis on images whose difference to the reference is known by construction:
+// a factor, a half-pixel move, a blur, extra light in a masked region, one bright tile, more
+// noise, and a difference of a shape no pattern has. Each must be named as what it is.
+#include "grade/difference_diagnosis.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+#include "sampling/pcg32.h"
+
+namespace pathway {
+namespace {
+
+constexpr int kSize = 64;
+constexpr int kTile = 4;
+constexpr int kReplicates = 64;
+constexpr double kSigma = 0.02;  // one render's noise per pixel and channel
+constexpr int kSubpixels = 8;    // per side, for the box-filtered images below
+
+// The scene: a bright rectangle with hard edges on a gentle ramp.
+double scene(double x, double y) {
+  const bool inside = x > 20.3 && x < 44.6 && y > 18.2 && y < 40.7;
+  return 0.2 + 0.3 * x / kSize + (inside ? 0.5 : 0.0);
+}
+
+// A region where "direct light" arrives: a soft blob, unrelated to the rectangle's edges.
+double directMask(double x, double y) {
+  const double dx = x - 16.0, dy = y - 46.0;
+  return 0.4 * std::exp(-(dx * dx + dy * dy) / 120.0);
+}
+
+// The scene seen through pixels (a box filter), moved right by `shift` pixels.
+Image boxFiltered(const std::function<double(double, double)>& f, double shift = 0.0) {
+  Image image(kSize, kSize);
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      double sum = 0.0;
+      for (int j = 0; j < kSubpixels; ++j)
+        for (int i = 0; i < kSubpixels; ++i)
+          sum += f(x + (i + 0.5) / kSubpixels - shift, y + (j + 0.5) / kSubpixels);
+      image.at(x, y) = Color(static_cast<float>(sum / (kSubpixels * kSubpixels)));
+    }
+  return image;
+}
+
+Image withNoise(const Image& truth, uint64_t seed, double sigma = kSigma) {
+  Pcg32 rng(seed);
+  Image image = truth;
+  for (Color& pixel : image.pixels)
+    for (int c = 0; c < 3; ++c) {
+      const double u1 = 1.0 - rng.nextFloat(), u2 = rng.nextFloat();
+      pixel[c] += static_cast<float>(sigma * std::sqrt(-2.0 * std::log(u1)) *
+                                     std::cos(2.0 * M_PI * u2));
+    }
+  return image;
+}
+
+class Diagnosis : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    truth_ = boxFiltered(scene);
+    std::vector<Image> replicates;
+    for (int i = 0; i < kReplicates; ++i) replicates.push_back(withNoise(truth_, 100 + i));
+    mean_ = Image(kSize, kSize);
+    for (size_t p = 0; p < mean_.pixels.size(); ++p) {
+      glm::dvec3 sum(0.0);
+      for (const Image& r : replicates) sum += glm::dvec3(r.pixels[p]);
+      mean_.pixels[p] = Color(sum / double(kReplicates));
+    }
+    tileVariance_ = replicateTileVariance(replicates, kTile);
+    direct_ = boxFiltered(directMask);
+  }
+
+  pathway::Diagnosis diagnose(const Image& image) {
+    ComparisonSettings settings;
+    settings.tileSize = kTile;
+    ComparisonInput compared;
+    compared.image = &image;
+    compared.reference = &mean_;
+    compared.tileVariance = &tileVariance_;
+    compared.replicates = kReplicates;
+    const Comparison comparison = compareImages(compared, settings);
+    EXPECT_FALSE(comparison.passed(settings)) << "the test's difference is too small to fail";
+    DiagnosisInput input;
+    input.image = &image;
+    input.reference = &mean_;
+    input.tileVariance = &tileVariance_;
+    input.replicates = kReplicates;
+    input.tileSize = kTile;
+    input.patterns[pattern::kDirect] = &direct_;
+    return diagnoseDifference(input, comparison, settings);
+  }
+
+  Image truth_, mean_, tileVariance_, direct_;
+};
+
+TEST_F(Diagnosis, OneFactorIsScale) {
+  Image image = truth_;
+  for (Color& c : image.pixels) c *= 0.97f;
+  const pathway::Diagnosis d = diagnose(withNoise(image, 7));
+  EXPECT_EQ(d.cause, LikelyCause::Scale) << d.line();
+  EXPECT_NE(d.explanation.find("% darker"), std::string::npos) << d.line();
+}
+
+TEST_F(Diagnosis, AHalfPixelMoveIsShift) {
+  const pathway::Diagnosis d = diagnose(withNoise(boxFiltered(scene, 0.5), 7));
+  EXPECT_EQ(d.cause, LikelyCause::Shift) << d.line();
+  EXPECT_NE(d.explanation.find("moved by about (+0.50, +0.00)"), std::string::npos) << d.line();
+}
+
+TEST_F(Diagnosis, ABlurIsEdges) {
+  Image blurred = truth_;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      Color sum(0.0f);
+      for (int d = -1; d <= 1; ++d)
+        sum += truth_.at(std::clamp(x + d, 0, kSize - 1), y) +
+               truth_.at(x, std::clamp(y + d, 0, kSize - 1));
+      blurred.at(x, y) = sum / 6.0f;
+    }
+  const pathway::Diagnosis d = diagnose(withNoise(blurred, 7));
+  EXPECT_EQ(d.cause, LikelyCause::Edges) << d.line();
+  EXPECT_NE(d.explanation.find("blurrier"), std::string::npos) << d.line();
+}
+
+TEST_F(Diagnosis, ExtraLightWhereTheDirectMaskIsIsLit) {
+  Image image = truth_;
+  for (size_t p = 0; p < image.pixels.size(); ++p) image.pixels[p] += 0.2f * direct_.pixels[p];
+  const pathway::Diagnosis d = diagnose(withNoise(image, 7));
+  EXPECT_EQ(d.cause, LikelyCause::Lit) << d.line();
+  EXPECT_NE(d.explanation.find("% too bright"), std::string::npos) << d.line();
+}
+
+TEST_F(Diagnosis, OneBrightTileIsLocal) {
+  Image image = withNoise(truth_, 7);
+  for (int y = 28; y < 32; ++y)
+    for (int x = 8; x < 12; ++x) image.at(x, y) += Color(0.3f);
+  const pathway::Diagnosis d = diagnose(image);
+  EXPECT_EQ(d.cause, LikelyCause::Local) << d.line();
+  EXPECT_NE(d.explanation.find("(8, 28)"), std::string::npos) << d.line();
+}
+
+TEST_F(Diagnosis, TwiceTheNoiseWithTheRightMeanIsNoise) {
+  const pathway::Diagnosis d = diagnose(withNoise(truth_, 7, 2.0 * kSigma));
+  EXPECT_EQ(d.cause, LikelyCause::Noise) << d.line();
+}
+
+TEST_F(Diagnosis, ADifferenceOfNoKnownShapeIsUnknown) {
+  Image image = truth_;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x)
+      image.at(x, y) += Color(0.02f * static_cast<float>(std::sin(x * 0.1) * std::cos(y * 0.08)));
+  const pathway::Diagnosis d = diagnose(withNoise(image, 7));
+  EXPECT_EQ(d.cause, LikelyCause::Unknown) << d.line();
+}
+
+TEST_F(Diagnosis, NaNPixelsInOneTileAreLocal) {
+  Image image = withNoise(truth_, 7);
+  image.at(40, 9) = Color(NAN);
+  const pathway::Diagnosis d = diagnose(image);
+  EXPECT_EQ(d.cause, LikelyCause::Local) << d.line();
+  EXPECT_NE(d.explanation.find("(40, 9)"), std::string::npos) << d.line();
+}
+
+TEST(LikelyCause, EveryCauseHasItsName) {
+  EXPECT_STREQ(likelyCauseName(LikelyCause::Scale), "scale");
+  EXPECT_STREQ(likelyCauseName(LikelyCause::Occlusion), "occlusion");
+  EXPECT_STREQ(likelyCauseName(LikelyCause::Unknown), "unknown");
+}
+
+}  // namespace
+}  // namespace pathway
