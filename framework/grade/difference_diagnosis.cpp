@@ -260,25 +260,46 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
   };
   const Image* direct = layer(pattern::kDirect);
   const Image* indirect = layer(pattern::kIndirect);
+  // Where a stage gathers light from the emitters: stage 5 samples them (NEE), stage 4 finds
+  // them with its branches.
+  const std::string gathering =
+      input.stage == 4
+          ? "look at the weight of a branch that reaches an emitter: the BRDF, cos theta, the "
+            "pdf, the average over the N branches"
+          : "look at next-event estimation: how an emitter and a point on it are picked and "
+            "their pdf, both cosines and the distance, the shadow ray, one-sided emitters";
   if (direct)
     list.push_back({LikelyCause::Lit, {tileVector(*direct, tiles)},
-                    [](const std::vector<double>& c) {
+                    [gathering](const std::vector<double>& c) {
                       return "the differences are where light arrives straight from the "
                              "emitters (that light " +
-                             percent(c[0]) + " " + brighterOrDarker(c[0]) +
-                             "): look at next-event estimation: how an emitter and a point on it "
-                             "are picked and their pdf, both cosines and the distance, the "
-                             "shadow ray, one-sided emitters";
+                             percent(c[0]) + " " + brighterOrDarker(c[0]) + "): " + gathering;
                     }});
   if (direct && indirect) {
     Image lit = *direct;
     for (size_t p = 0; p < lit.pixels.size(); ++p) lit.pixels[p] += indirect->pixels[p];
-    list.push_back({LikelyCause::Lit, {tileVector(lit, tiles)}, [](const std::vector<double>& c) {
+    list.push_back({LikelyCause::Lit, {tileVector(lit, tiles)},
+                    [gathering](const std::vector<double>& c) {
                       return "the differences are wherever light from the emitters arrives, "
                              "directly or after bounces (" +
                              percent(c[0]) + " " + brighterOrDarker(c[0]) +
-                             "), but not on the emitters themselves: look at next-event "
-                             "estimation: the light's pdf, the geometry term, the shadow ray";
+                             "), but not on the emitters themselves: " + gathering;
+                    }});
+  }
+  for (const auto& name : {pattern::directFrom, pattern::litFrom}) {
+    std::vector<Vector> perEmitter;
+    for (size_t k = 0; const Image* alone = layer(name(k).c_str()); ++k)
+      perEmitter.push_back(tileVector(*alone, tiles));
+    if (perEmitter.size() < 2) continue;
+    list.push_back({LikelyCause::Lit, perEmitter, [gathering](const std::vector<double>& c) {
+                      std::string factors;
+                      for (size_t k = 0; k < c.size(); ++k)
+                        factors += (k ? ", " : "") + percent(c[k]) + " " + brighterOrDarker(c[k]);
+                      return "the differences are where light from the emitters arrives, by a "
+                             "factor of each emitter's own (" +
+                             factors + "): " + gathering +
+                             "; in particular whether an emitter's pdf is that of the rule that "
+                             "picked it";
                     }});
   }
   if (indirect)
@@ -330,6 +351,18 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
                              signedNumber(c[1]) +
                              ") pixels (right, down) against the reference: look at where a "
                              "pixel's centre is and which pixels a sample reaches";
+                    }});
+  if (const Image* wider = layer(pattern::kWiderFilter))
+    // The filter's width and, beside it, the reference's Laplacian: a profile of another shape
+    // moves light at edges as neither does alone.
+    list.push_back({LikelyCause::Edges,
+                    {tileVector(*wider, tiles), tileVector(laplacian, tiles)},
+                    [](const std::vector<double>& c) {
+                      return std::string("the differences sit at edges: the filter's profile has "
+                                         "another shape (") +
+                             (c[0] > 0 ? "wider" : "narrower") +
+                             " than it should be, in effect); look at the filter's formula, "
+                             "its radius, and which pixels a sample's splat reaches";
                     }});
   if (const Image* wider = layer(pattern::kWiderFilter))
     list.push_back({LikelyCause::Edges, {tileVector(*wider, tiles)},

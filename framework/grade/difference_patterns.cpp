@@ -9,6 +9,8 @@ namespace {
 
 // The patterns only need to be clearer than one submission's render: this many times its samples.
 constexpr uint32_t kPatternSppFactor = 8;
+// Emitters (emissive materials) whose direct light is stored apart, at most.
+constexpr size_t kMostEmittersApart = 4;
 // Camera rays per pixel side for the escaped share.
 constexpr int kEscapeRaysPerSide = 4;
 // Seeds of the pattern renders: apart from the replicates' (kReferenceSeed + i).
@@ -116,6 +118,25 @@ std::map<std::string, Image> makeDifferencePatterns(const GradingCase& gradingCa
     const auto depthParam = gradingCase.params.find(depth);
     const bool bounces = depthParam == gradingCase.params.end() || depthParam->second != "1";
     if (bounces) patterns[pattern::kIndirect] = difference(referenceMean, m1);
+    // Each emitter's direct light on its own (the others dark), where there are several: a pdf
+    // that does not match the picking rule is off by a factor of each emitter's own.
+    std::vector<size_t> emissive;
+    for (size_t m = 0; m < tracer.scene().materials.size(); ++m)
+      if (tracer.scene().materials[m].isEmissive()) emissive.push_back(m);
+    if (emissive.size() >= 2 && emissive.size() <= kMostEmittersApart) {
+      for (size_t k = 0; k < emissive.size(); ++k) {
+        Scene alone = tracer.scene();
+        for (size_t other : emissive)
+          if (other != emissive[k]) alone.materials[other].emission = Color(0.0f);
+        const RayTracer aloneTracer(alone);
+        const uint64_t seeds = seed + 2 + 3 * k;
+        const Image emittedAlone = renderVariant(gradingCase, aloneTracer, emitted, seeds);
+        patterns[pattern::directFrom(k)] =
+            difference(renderVariant(gradingCase, aloneTracer, direct, seeds + 1), emittedAlone);
+        patterns[pattern::litFrom(k)] =
+            difference(renderVariant(gradingCase, aloneTracer, {}, seeds + 2), emittedAlone);
+      }
+    }
   }
   for (auto it = patterns.begin(); it != patterns.end();)
     it = isZero(it->second) ? patterns.erase(it) : std::next(it);

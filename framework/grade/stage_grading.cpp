@@ -254,6 +254,7 @@ void judgeAgainstReference(CaseResult& result, const LoadedImage& render,
     if (!render.images.variance.pixels.empty()) input.imageVariance = &render.images.variance;
     input.replicates = reference.replicates;
     input.tileSize = reference.tileSize;
+    input.stage = result.stage;
     for (const auto& [name, image] : reference.patterns) input.patterns[name] = &image;
     result.diagnosis = diagnoseDifference(input, result.comparison, settings);
   }
