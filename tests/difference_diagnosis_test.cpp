@@ -51,8 +51,8 @@ Image withNoise(const Image& truth, uint64_t seed, double sigma = kSigma) {
   for (Color& pixel : image.pixels)
     for (int c = 0; c < 3; ++c) {
       const double u1 = 1.0 - rng.nextFloat(), u2 = rng.nextFloat();
-      pixel[c] += static_cast<float>(sigma * std::sqrt(-2.0 * std::log(u1)) *
-                                     std::cos(2.0 * M_PI * u2));
+      pixel[c] +=
+          static_cast<float>(sigma * std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2));
     }
   return image;
 }

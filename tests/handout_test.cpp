@@ -60,10 +60,10 @@ TEST_F(Handout, ShipsTheReferenceCompiledBuildsPassesItsSuiteAndGradesAsTheAutog
   const fs::path handout = unpacked / "pathway";
 
   // The tarball as shipped, the compiled library included, holds no line of solutions/.
-  const test::CommandOutcome leaks =
-      test::runCommand("mkdir " + (dir_ / "shipped").string() + " && tar -xzf " + tarball.string() +
-                       " --strip-components=1 -C " + (dir_ / "shipped").string() + " && " + kSource +
-                       "/scripts/handout-leaks " + kSource + " " + (dir_ / "shipped").string());
+  const test::CommandOutcome leaks = test::runCommand(
+      "mkdir " + (dir_ / "shipped").string() + " && tar -xzf " + tarball.string() +
+      " --strip-components=1 -C " + (dir_ / "shipped").string() + " && " + kSource +
+      "/scripts/handout-leaks " + kSource + " " + (dir_ / "shipped").string());
   EXPECT_EQ(leaks.exitCode, 0) << leaks.output;
   EXPECT_NE(leaks.output.find(": 0 found"), std::string::npos) << leaks.output;
 

@@ -213,7 +213,8 @@ void writeClassTable(const ClassGrading& grading, const std::vector<SubmissionRe
   std::ofstream html(fs::path(grading.output) / "index.html");
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Pathway: class "
           "grades</title>\n<style>body{font-family:sans-serif;margin:2em}"
-          "td,th{padding:2px 10px;text-align:right}td:first-child,th:first-child,td:nth-last-child(-n+2)"
+          "td,th{padding:2px "
+          "10px;text-align:right}td:first-child,th:first-child,td:nth-last-child(-n+2)"
           "{text-align:left}</style></head><body>\n<h1>Class grades</h1>\n<table><tr><th>"
           "submission</th><th>points</th>";
   for (int stage = 1; stage <= kStageCount; ++stage) html << "<th>stage " << stage << "</th>";

@@ -206,14 +206,14 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
     return clamped(i, x + 1, y) + clamped(i, x - 1, y) + clamped(i, x, y + 1) +
            clamped(i, x, y - 1) - 4.0f * i.at(x, y);
   });
-  list.push_back({LikelyCause::Edges, {tileVector(laplacian, tiles)},
-                  [](const std::vector<double>& c) {
-                    // image ≈ R + a ∇²R: a > 0 spreads each edge (blur), a < 0 steepens it.
-                    return std::string("the differences sit at edges: the image is ") +
-                           (c[0] > 0 ? "blurrier" : "sharper") +
-                           " than the reference there; look at the filter's profile and "
-                           "radius, and at which pixels a sample's splat reaches";
-                  }});
+  list.push_back(
+      {LikelyCause::Edges, {tileVector(laplacian, tiles)}, [](const std::vector<double>& c) {
+         // image ≈ R + a ∇²R: a > 0 spreads each edge (blur), a < 0 steepens it.
+         return std::string("the differences sit at edges: the image is ") +
+                (c[0] > 0 ? "blurrier" : "sharper") +
+                " than the reference there; look at the filter's profile and "
+                "radius, and at which pixels a sample's splat reaches";
+       }});
   const Image dx = derivative(r, [](const Image& i, int x, int y) {
     return 0.5f * (clamped(i, x + 1, y) - clamped(i, x - 1, y));
   });
@@ -226,8 +226,7 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
        [](const std::vector<double>& c) {
          // image ≈ R + a·∇R = R(p + a): the image shows what the reference shows a further on,
          // so it is moved by -a (to first order: it reads small moves across hard edges short).
-         return "the image is moved by about (" + signedNumber(-c[0]) + ", " +
-                signedNumber(-c[1]) +
+         return "the image is moved by about (" + signedNumber(-c[0]) + ", " + signedNumber(-c[1]) +
                 ") pixels (right, down) against the reference: look at where a pixel's centre "
                 "is and which pixels a sample reaches";
        }});
@@ -269,22 +268,22 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
           : "look at next-event estimation: how an emitter and a point on it are picked and "
             "their pdf, both cosines and the distance, the shadow ray, one-sided emitters";
   if (direct)
-    list.push_back({LikelyCause::Lit, {tileVector(*direct, tiles)},
-                    [gathering](const std::vector<double>& c) {
-                      return "the differences are where light arrives straight from the "
-                             "emitters (that light " +
-                             percent(c[0]) + " " + brighterOrDarker(c[0]) + "): " + gathering;
-                    }});
+    list.push_back(
+        {LikelyCause::Lit, {tileVector(*direct, tiles)}, [gathering](const std::vector<double>& c) {
+           return "the differences are where light arrives straight from the "
+                  "emitters (that light " +
+                  percent(c[0]) + " " + brighterOrDarker(c[0]) + "): " + gathering;
+         }});
   if (direct && indirect) {
     Image lit = *direct;
     for (size_t p = 0; p < lit.pixels.size(); ++p) lit.pixels[p] += indirect->pixels[p];
-    list.push_back({LikelyCause::Lit, {tileVector(lit, tiles)},
-                    [gathering](const std::vector<double>& c) {
-                      return "the differences are wherever light from the emitters arrives, "
-                             "directly or after bounces (" +
-                             percent(c[0]) + " " + brighterOrDarker(c[0]) +
-                             "), but not on the emitters themselves: " + gathering;
-                    }});
+    list.push_back(
+        {LikelyCause::Lit, {tileVector(lit, tiles)}, [gathering](const std::vector<double>& c) {
+           return "the differences are wherever light from the emitters arrives, "
+                  "directly or after bounces (" +
+                  percent(c[0]) + " " + brighterOrDarker(c[0]) +
+                  "), but not on the emitters themselves: " + gathering;
+         }});
   }
   for (const auto& name : {pattern::directFrom, pattern::litFrom}) {
     std::vector<Vector> perEmitter;
@@ -303,36 +302,37 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
                     }});
   }
   if (indirect)
-    list.push_back({LikelyCause::Indirect, {tileVector(*indirect, tiles)},
-                    [](const std::vector<double>& c) {
-                      return "the differences are in light that arrives after two or more "
-                             "bounces (" +
-                             percent(c[0]) + " " + brighterOrDarker(c[0]) +
-                             "): look at the continuation ray and its weight, Russian "
-                             "roulette's 1/q, and where paths stop";
-                    }});
+    list.push_back(
+        {LikelyCause::Indirect, {tileVector(*indirect, tiles)}, [](const std::vector<double>& c) {
+           return "the differences are in light that arrives after two or more "
+                  "bounces (" +
+                  percent(c[0]) + " " + brighterOrDarker(c[0]) +
+                  "): look at the continuation ray and its weight, Russian "
+                  "roulette's 1/q, and where paths stop";
+         }});
   if (const Image* escaped = layer(pattern::kEscaped))
-    list.push_back({LikelyCause::Background, {tileVector(*escaped, tiles)},
-                    [](const std::vector<double>& c) {
-                      return "the differences are where camera rays leave the scene (the "
-                             "background " +
-                             percent(c[0]) + " " + brighterOrDarker(c[0]) +
-                             "): look at what a ray that hits nothing returns";
-                    }});
+    list.push_back(
+        {LikelyCause::Background, {tileVector(*escaped, tiles)}, [](const std::vector<double>& c) {
+           return "the differences are where camera rays leave the scene (the "
+                  "background " +
+                  percent(c[0]) + " " + brighterOrDarker(c[0]) +
+                  "): look at what a ray that hits nothing returns";
+         }});
   if (const Image* occluded = layer(pattern::kOccluded))
-    list.push_back({LikelyCause::Occlusion, {tileVector(*occluded, tiles)},
-                    [](const std::vector<double>& c) {
-                      // image ≈ R + a (U - R): the occluded part U - R shrinks by the factor a.
-                      return "the differences follow occlusion, in corners and near contacts "
-                             "(the image there is " +
-                             percent(c[0]) + (c[0] > 0 ? " less" : " more") +
-                             " occluded than it should be): look at the AO ray's length, its "
-                             "directions and their pdf, and where the ray starts";
-                    }});
+    list.push_back(
+        {LikelyCause::Occlusion, {tileVector(*occluded, tiles)}, [](const std::vector<double>& c) {
+           // image ≈ R + a (U - R): the occluded part U - R shrinks by the factor a.
+           return "the differences follow occlusion, in corners and near contacts "
+                  "(the image there is " +
+                  percent(c[0]) + (c[0] > 0 ? " less" : " more") +
+                  " occluded than it should be): look at the AO ray's length, its "
+                  "directions and their pdf, and where the ray starts";
+         }});
   for (const auto& [name, rays] : {std::pair{pattern::kLongerRays, "twice as long"},
                                    std::pair{pattern::kUnlimitedRays, "of any length"}})
     if (const Image* longer = layer(name))
-      list.push_back({LikelyCause::Occlusion, {tileVector(*longer, tiles)},
+      list.push_back({LikelyCause::Occlusion,
+                      {tileVector(*longer, tiles)},
                       [rays = std::string(rays)](const std::vector<double>& c) {
                         // image ≈ R + a (A' - R): a = 1 is AO with the longer rays.
                         return "the differences follow occlusion: the image looks like AO with "
@@ -358,22 +358,24 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
     list.push_back({LikelyCause::Edges,
                     {tileVector(*wider, tiles), tileVector(laplacian, tiles)},
                     [](const std::vector<double>& c) {
-                      return std::string("the differences sit at edges: the filter's profile has "
-                                         "another shape (") +
+                      return std::string(
+                                 "the differences sit at edges: the filter's profile has "
+                                 "another shape (") +
                              (c[0] > 0 ? "wider" : "narrower") +
                              " than it should be, in effect); look at the filter's formula, "
                              "its radius, and which pixels a sample's splat reaches";
                     }});
   if (const Image* wider = layer(pattern::kWiderFilter))
-    list.push_back({LikelyCause::Edges, {tileVector(*wider, tiles)},
-                    [](const std::vector<double>& c) {
-                      // 1.25 / 0.8 is e^0.446: a = 1 is a filter e^0.446 times as wide.
-                      return std::string("the differences sit at edges: the image looks as if "
-                                         "its filter were about ") +
-                             ratio(std::exp(0.446 * c[0])) +
-                             " times as wide as it should be; look at the filter's profile and "
-                             "radius, and at which pixels a sample's splat reaches";
-                    }});
+    list.push_back(
+        {LikelyCause::Edges, {tileVector(*wider, tiles)}, [](const std::vector<double>& c) {
+           // 1.25 / 0.8 is e^0.446: a = 1 is a filter e^0.446 times as wide.
+           return std::string(
+                      "the differences sit at edges: the image looks as if "
+                      "its filter were about ") +
+                  ratio(std::exp(0.446 * c[0])) +
+                  " times as wide as it should be; look at the filter's profile and "
+                  "radius, and at which pixels a sample's splat reaches";
+         }});
   // A mask's light may be off by a factor that changes across the image (a pdf that is wrong for
   // one emitter, a cosine left out): the same mask times a smooth field, 1, u, v, u², uv, v² in
   // image coordinates, with its price in fitted numbers.
@@ -499,8 +501,8 @@ Diagnosis diagnoseDifference(const DiagnosisInput& input, const Comparison& comp
     const glm::dvec3 d = tileMean(image, t) - tileMean(reference, t);
     const glm::dvec3 floor =
         settings.relativeFloor * glm::abs(tileMean(reference, t)) + settings.absoluteFloor;
-    const glm::dvec3 v = input.tileVariance ? glm::dvec3(input.tileVariance->at(t.x0, t.y0))
-                                            : glm::dvec3(0.0);
+    const glm::dvec3 v =
+        input.tileVariance ? glm::dvec3(input.tileVariance->at(t.x0, t.y0)) : glm::dvec3(0.0);
     const double replicates = std::max(1, input.replicates);
     for (int c = 0; c < 3; ++c) {
       const double w = 1.0 / std::sqrt(v[c] * (1.0 + 1.0 / replicates) + floor[c] * floor[c]);
@@ -562,8 +564,8 @@ Diagnosis diagnoseDifference(const DiagnosisInput& input, const Comparison& comp
       best = named(LikelyCause::Local, std::min(1.0, localExplained / excess),
                    std::to_string(localTiles.size()) + " tile(s) hold most of the difference, " +
                        "the worst at pixels (" + std::to_string(worst.x0) + ", " +
-                       std::to_string(worst.y0) + ") to (" + std::to_string(worst.x1 - 1) +
-                       ", " + std::to_string(worst.y1 - 1) +
+                       std::to_string(worst.y0) + ") to (" + std::to_string(worst.x1 - 1) + ", " +
+                       std::to_string(worst.y1 - 1) +
                        "): look for rare huge samples there (a division by a tiny pdf or "
                        "distance) or a value that breaks one kind of hit");
     }
@@ -572,8 +574,7 @@ Diagnosis diagnoseDifference(const DiagnosisInput& input, const Comparison& comp
   // `noise`: the render's own variance against the reference renders'. A render v times as noisy
   // makes about n·v of loss, so v - 1 of it per value is the noise's share of the excess.
   const double variance = varianceRatio(input, tiles);
-  const double noiseShare =
-      variance > 1.0 ? std::min(1.0, n * (variance - 1.0) / excess) : 0.0;
+  const double noiseShare = variance > 1.0 ? std::min(1.0, n * (variance - 1.0) / excess) : 0.0;
   const bool noisier = variance > kNoiseRatio || (variance > 0.0 && variance < 1.0 / kNoiseRatio);
   const std::string noise =
       "the mean agrees but the noise does not (your render's own variance is " + ratio(variance) +
@@ -581,8 +582,9 @@ Diagnosis diagnoseDifference(const DiagnosisInput& input, const Comparison& comp
       "directions for which pdf) or whether some are dropped";
   if (noisier && noiseShare >= kMinimumShare && noiseShare > best.explainedShare)
     return named(LikelyCause::Noise, noiseShare,
-                 noise + " (this explains " + percent(noiseShare) + " of the difference beyond "
-                         "noise)");
+                 noise + " (this explains " + percent(noiseShare) +
+                     " of the difference beyond "
+                     "noise)");
   if (bestScore > 0.0 && best.explainedShare >= kMinimumShare) {
     best.explanation += " (this pattern explains " + percent(best.explainedShare) +
                         " of the difference beyond noise)";

@@ -40,27 +40,31 @@ namespace pattern {
 // Not a pattern to fit: the mean of the reference renders' own per-pixel variance estimates, which
 // a render's own estimate is held against before its difference is called `noise`.
 constexpr const char* kRenderVariance = "pattern.renderVariance";
-constexpr const char* kMovedRight = "pattern.movedRight";  // image moved 1 pixel right, minus it
-constexpr const char* kMovedDown = "pattern.movedDown";    // the same, down
+constexpr const char* kMovedRight = "pattern.movedRight";    // image moved 1 pixel right, minus it
+constexpr const char* kMovedDown = "pattern.movedDown";      // the same, down
 constexpr const char* kWiderFilter = "pattern.widerFilter";  // filter 1.25x minus 0.8x as wide
-constexpr const char* kDirect = "pattern.direct";          // light one bounce from the emitters
+constexpr const char* kDirect = "pattern.direct";            // light one bounce from the emitters
 constexpr const char* kIndirect = "pattern.indirect";
 // Direct light of emitter (emissive material) k alone: "pattern.direct.0", ...
-inline std::string directFrom(size_t k) { return "pattern.direct." + std::to_string(k); }
+inline std::string directFrom(size_t k) {
+  return "pattern.direct." + std::to_string(k);
+}
 // All the light of emitter k alone, directly or after bounces, but not the emitter itself.
-inline std::string litFrom(size_t k) { return "pattern.lit." + std::to_string(k); }      // light after two or more bounces
-constexpr const char* kEscaped = "pattern.escaped";        // the background camera rays see
-constexpr const char* kOccluded = "pattern.occluded";  // unoccluded AO minus the reference
+inline std::string litFrom(size_t k) {
+  return "pattern.lit." + std::to_string(k);
+}  // light after two or more bounces
+constexpr const char* kEscaped = "pattern.escaped";            // the background camera rays see
+constexpr const char* kOccluded = "pattern.occluded";          // unoccluded AO minus the reference
 constexpr const char* kLongerRays = "pattern.aoLonger";        // AO, rays twice as long, minus it
 constexpr const char* kUnlimitedRays = "pattern.aoUnlimited";  // AO, rays of any length, minus it
 }  // namespace pattern
 
 struct DiagnosisInput {
-  const Image* image = nullptr;         // the render
-  const Image* reference = nullptr;     // the reference's mean
-  const Image* tileVariance = nullptr;  // one render's tile-mean variance (grading_reference.h)
+  const Image* image = nullptr;          // the render
+  const Image* reference = nullptr;      // the reference's mean
+  const Image* tileVariance = nullptr;   // one render's tile-mean variance (grading_reference.h)
   const Image* imageVariance = nullptr;  // the render's own per-pixel variance estimate
-  int replicates = 0;                   // behind the reference's mean
+  int replicates = 0;                    // behind the reference's mean
   int tileSize = 0;
   int stage = 0;  // the stage graded (0: not a stage), for what the explanations point at
   std::map<std::string, const Image*> patterns;  // by pattern:: name

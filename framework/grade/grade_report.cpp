@@ -67,7 +67,9 @@ std::string general(double value) {
 }
 
 // Capped p-values (Bonferroni, Šidák) read "> 0.99", not "1".
-std::string pValue(double p) { return p > 0.99 ? "&gt; 0.99" : general(p); }
+std::string pValue(double p) {
+  return p > 0.99 ? "&gt; 0.99" : general(p);
+}
 
 const char* causeOf(const CaseResult& c) {
   return c.diagnosis ? likelyCauseName(c.diagnosis->cause) : "";
@@ -222,7 +224,8 @@ void writeHtmlReport(const std::string& folder, const GradeSummary& summary,
          << "</td><td>"
          << (c.compared && c.comparison.hardFailures.empty() ? pValue(c.comparison.omnibusP)
                                                              : "&ndash;")
-         << "</td><td>" << causeOf(c) << "</td><td>" << (c.seconds > 0 ? fixed(c.seconds, 2) + " s" : "&ndash;") << "</td><td>"
+         << "</td><td>" << causeOf(c) << "</td><td>"
+         << (c.seconds > 0 ? fixed(c.seconds, 2) + " s" : "&ndash;") << "</td><td>"
          << (c.referenceSeconds > 0 ? fixed(c.referenceSeconds, 2) + " s" : "&ndash;")
          << "</td></tr>\n";
   }
@@ -299,8 +302,7 @@ std::string gradescopeResults(const GradeSummary& summary, const ComparisonSetti
         << (!c.compared                     ? "none"
             : c.comparison.passed(settings) ? "pass"
                                             : "fail")
-        << "\", \"likely_cause\": \"" << causeOf(c) << "\", \"todos\": " << c.todos.size()
-        << "}}";
+        << "\", \"likely_cause\": \"" << causeOf(c) << "\", \"todos\": " << c.todos.size() << "}}";
   }
   out << "\n  ]\n}\n";
   return out.str();

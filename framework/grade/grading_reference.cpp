@@ -40,8 +40,8 @@ GradingReference makeGradingReference(const GradingCase& gradingCase, const RayT
     if (i == 0) reference.metadata = toMap(result.metadata);
     seconds += result.stats.seconds;
     rays += static_cast<double>(result.stats.counters.totalRays());
-    if (ownVariance.pixels.empty()) ownVariance = Image(result.images.variance.width,
-                                                        result.images.variance.height);
+    if (ownVariance.pixels.empty())
+      ownVariance = Image(result.images.variance.width, result.images.variance.height);
     for (size_t p = 0; p < ownVariance.pixels.size(); ++p)
       ownVariance.pixels[p] += result.images.variance.pixels[p] / float(kReferenceReplicates);
     replicates.push_back(std::move(result.images.color));

@@ -1,7 +1,8 @@
 // A grading reference: the mean of kReferenceReplicates independent reference renders of one
 // grading case at the submission's spp, and the variance of one such render's tile means (and of
 // its means over the omnibus tests' larger blocks), stored as an EXR (R, G, B = mean;
-// tileVariance.R/G/B; blockVariance.R/G/B; pattern.*.R/G/B) with the settings that made it in its metadata.
+// tileVariance.R/G/B; blockVariance.R/G/B; pattern.*.R/G/B) with the settings that made it in its
+// metadata.
 #pragma once
 
 #include <functional>

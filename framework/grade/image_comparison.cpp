@@ -110,10 +110,9 @@ std::string Comparison::describe(const ComparisonSettings& settings) const {
     out << "no single tile differs enough to fail on its own, but together they do: the "
            "difference is small and spread over the whole image (see the map of block z)\n";
   out << (failingTiles > 0 ? std::to_string(failingTiles) + " of " : "no tile of ") << tiles.size()
-      << " tiles (" << tileSize << "x" << tileSize
-      << " pixels) differ significantly; worst tile " << formatP(worstTileP)
-      << " after correction for " << 3 * tiles.size() << " tests (fails below "
-      << formatNumber(settings.tileAlpha) << ")\n";
+      << " tiles (" << tileSize << "x" << tileSize << " pixels) differ significantly; worst tile "
+      << formatP(worstTileP) << " after correction for " << 3 * tiles.size()
+      << " tests (fails below " << formatNumber(settings.tileAlpha) << ")\n";
   out << "whole image: omnibus " << formatP(omnibusP) << " (fails below "
       << formatNumber(settings.omnibusAlpha) << "); mean differs from the reference by "
       << formatNumber(100.0 * meanRelativeDifference) << "%\n";

@@ -54,16 +54,17 @@ constexpr int kQuotedOutputLines = 12;
 // "your stage crashed (signal 4, Illegal instruction) in case stage2-ceiling (ceiling.gltf, 64x64,
 // 8 spp) at pixel (12, 40); its last output: ..."
 std::string stopMessage(const ChildOutcome& child, const GradingCase& gradingCase, double limit) {
-  std::string message =
-      "your stage " +
-      (child.succeeded() ? std::string("stopped without writing its image") : child.describe(limit)) +
-      " in case " + gradingCase.id() + " (" + gradingCase.scene + ", " +
-      std::to_string(gradingCase.width) + "x" + std::to_string(gradingCase.height) + ", " +
-      std::to_string(gradingCase.spp) + " spp)";
+  std::string message = "your stage " +
+                        (child.succeeded() ? std::string("stopped without writing its image")
+                                           : child.describe(limit)) +
+                        " in case " + gradingCase.id() + " (" + gradingCase.scene + ", " +
+                        std::to_string(gradingCase.width) + "x" +
+                        std::to_string(gradingCase.height) + ", " +
+                        std::to_string(gradingCase.spp) + " spp)";
   const std::string pixels = pixelsInProgressFrom(child.output);
   if (!pixels.empty())
     message += (pixels.find("), (") != std::string::npos ? " while rendering pixels "
-                                                          : " while rendering pixel ") +
+                                                         : " while rendering pixel ") +
                pixels;
   // The child's own lines, without the one that named the pixel.
   std::vector<std::string> lines;

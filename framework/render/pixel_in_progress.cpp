@@ -17,7 +17,9 @@ std::atomic<int64_t> slots[kSlots];  // x << 32 | y, or kNoPixel
 std::atomic<int> slotsTaken{0};
 constexpr const char* kMarker = "while rendering pixel ";
 
-int64_t pack(int x, int y) { return (int64_t(x) << 32) | uint32_t(y); }
+int64_t pack(int x, int y) {
+  return (int64_t(x) << 32) | uint32_t(y);
+}
 
 std::atomic<int64_t>* mySlot() {
   thread_local const int index = slotsTaken.fetch_add(1, std::memory_order_relaxed);
@@ -25,7 +27,9 @@ std::atomic<int64_t>* mySlot() {
 }
 
 // Async-signal-safe output: write(2) and hand-made number formatting only.
-void put(const char* text) { (void)!::write(STDERR_FILENO, text, std::strlen(text)); }
+void put(const char* text) {
+  (void)!::write(STDERR_FILENO, text, std::strlen(text));
+}
 void putNumber(int64_t value) {
   char digits[24];
   int n = 0;
