@@ -41,23 +41,16 @@ double neighbourCorrelation(const Vector& y, size_t columns) {
   return squares > 0.0 ? std::max(right, below) / squares : 0.0;
 }
 
-std::string percent(double fraction) {
+// One number as printf formats it.
+std::string formatted(const char* format, double value) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.1f%%", 100.0 * std::fabs(fraction));
+  std::snprintf(text, sizeof text, format, value);
   return text;
 }
 
-std::string ratio(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2f", value);
-  return text;
-}
-
-std::string signedNumber(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%+.2f", value);
-  return text;
-}
+std::string percent(double fraction) { return formatted("%.1f%%", 100.0 * std::fabs(fraction)); }
+std::string ratio(double value) { return formatted("%.2f", value); }
+std::string signedNumber(double value) { return formatted("%+.2f", value); }
 
 // Finite differences at pixel level, clamped at the borders.
 Image derivative(const Image& r, const std::function<Color(const Image&, int, int)>& stencil) {
@@ -491,8 +484,8 @@ Diagnosis diagnoseDifference(const DiagnosisInput& input, const Comparison& comp
         t.y1 <= image.height - kBorder)
       tiles.push_back(t);
   if (tiles.empty()) return named(LikelyCause::Unknown, 0.0, "the image is too small to tell");
-  size_t columns = 0;
-  while (columns < tiles.size() && tiles[columns].y0 == tiles.front().y0) ++columns;
+  size_t tileColumns = 0;
+  while (tileColumns < tiles.size() && tiles[tileColumns].y0 == tiles.front().y0) ++tileColumns;
 
   // Whitened differences y = d / σ, σ² the variance of the difference of one render's tile mean
   // and the reference's (as the tile test has it, without the render's own variance).
@@ -593,7 +586,7 @@ Diagnosis diagnoseDifference(const DiagnosisInput& input, const Comparison& comp
   // Without the renders' own variances: far more difference than noise, no pattern for it, and
   // neighbouring tiles that do not move together.
   if (variance <= 0.0 && lossOfY - n > 5.0 * std::sqrt(2.0 * n) &&
-      neighbourCorrelation(y, columns) < kMostNoiseCorrelation)
+      neighbourCorrelation(y, tileColumns) < kMostNoiseCorrelation)
     return named(LikelyCause::Noise, 1.0 - best.explainedShare,
                  "the differences follow no pattern, and there are " + ratio(lossOfY / n) +
                      " times as many as noise makes: the mean agrees but the noise does not; "

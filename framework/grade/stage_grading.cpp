@@ -52,7 +52,7 @@ struct RenderOutcome {
 constexpr int kQuotedOutputLines = 12;
 
 // "your stage crashed (signal 4, Illegal instruction) in case stage2-ceiling (ceiling.gltf, 64x64,
-// 8 spp) at pixel (12, 40); its last output: ..."
+// 8 spp) while rendering pixel (12, 40); its last output: ..."
 std::string stopMessage(const ChildOutcome& child, const GradingCase& gradingCase, double limit) {
   std::string message = "your stage " +
                         (child.succeeded() ? std::string("stopped without writing its image")
