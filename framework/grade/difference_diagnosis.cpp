@@ -48,9 +48,15 @@ std::string formatted(const char* format, double value) {
   return text;
 }
 
-std::string percent(double fraction) { return formatted("%.1f%%", 100.0 * std::fabs(fraction)); }
-std::string ratio(double value) { return formatted("%.2f", value); }
-std::string signedNumber(double value) { return formatted("%+.2f", value); }
+std::string percent(double fraction) {
+  return formatted("%.1f%%", 100.0 * std::fabs(fraction));
+}
+std::string ratio(double value) {
+  return formatted("%.2f", value);
+}
+std::string signedNumber(double value) {
+  return formatted("%+.2f", value);
+}
 
 // Finite differences at pixel level, clamped at the borders.
 Image derivative(const Image& r, const std::function<Color(const Image&, int, int)>& stencil) {
