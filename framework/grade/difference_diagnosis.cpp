@@ -187,6 +187,19 @@ Image shifted(const Image& r, double sx, double sy) {
   return out;
 }
 
+// What the messages of several candidates point at, said once.
+constexpr const char* kFilterHint =
+    "look at the filter's profile and radius, and at which pixels a sample's splat reaches";
+constexpr const char* kSamplingHint =
+    "look at how samples are drawn (which dimensions, which directions for which pdf) or "
+    "whether some are dropped";
+
+std::string movedBy(double sx, double sy) {
+  return "the image is moved by about (" + signedNumber(sx) + ", " + signedNumber(sy) +
+         ") pixels (right, down) against the reference: look at where a pixel's centre is and "
+         "which pixels a sample reaches";
+}
+
 std::string brighterOrDarker(double coefficient) {
   return coefficient > 0 ? "too bright" : "too dark";
 }
@@ -209,9 +222,7 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
       {LikelyCause::Edges, {tileVector(laplacian, tiles)}, [](const std::vector<double>& c) {
          // image ≈ R + a ∇²R: a > 0 spreads each edge (blur), a < 0 steepens it.
          return std::string("the differences sit at edges: the image is ") +
-                (c[0] > 0 ? "blurrier" : "sharper") +
-                " than the reference there; look at the filter's profile and "
-                "radius, and at which pixels a sample's splat reaches";
+                (c[0] > 0 ? "blurrier" : "sharper") + " than the reference there; " + kFilterHint;
        }});
   const Image dx = derivative(r, [](const Image& i, int x, int y) {
     return 0.5f * (clamped(i, x + 1, y) - clamped(i, x - 1, y));
@@ -219,16 +230,14 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
   const Image dy = derivative(r, [](const Image& i, int x, int y) {
     return 0.5f * (clamped(i, x, y + 1) - clamped(i, x, y - 1));
   });
-  list.push_back(
-      {LikelyCause::Shift,
-       {tileVector(dx, tiles), tileVector(dy, tiles)},
-       [](const std::vector<double>& c) {
-         // image ≈ R + a·∇R = R(p + a): the image shows what the reference shows a further on,
-         // so it is moved by -a (to first order: it reads small moves across hard edges short).
-         return "the image is moved by about (" + signedNumber(-c[0]) + ", " + signedNumber(-c[1]) +
-                ") pixels (right, down) against the reference: look at where a pixel's centre "
-                "is and which pixels a sample reaches";
-       }});
+  list.push_back({LikelyCause::Shift,
+                  {tileVector(dx, tiles), tileVector(dy, tiles)},
+                  [](const std::vector<double>& c) {
+                    // image ≈ R + a·∇R = R(p + a): the image shows what the reference shows a
+                    // further on, so it is moved by -a (to first order: it reads small moves across
+                    // hard edges short).
+                    return movedBy(-c[0], -c[1]);
+                  }});
   // A move is searched on a grid of fractions of a pixel (a first-order fit of a gradient
   // misreads moves across hard edges); the search costs two more fitted numbers.
   for (int j = -kShiftSteps; j <= kShiftSteps; ++j)
@@ -239,12 +248,7 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
       for (size_t p = 0; p < moved.pixels.size(); ++p) moved.pixels[p] -= r.pixels[p];
       list.push_back({LikelyCause::Shift,
                       {tileVector(moved, tiles)},
-                      [sx, sy](const std::vector<double>&) {
-                        return "the image is moved by about (" + signedNumber(sx) + ", " +
-                               signedNumber(sy) +
-                               ") pixels (right, down) against the reference: look at where "
-                               "a pixel's centre is and which pixels a sample reaches";
-                      },
+                      [sx, sy](const std::vector<double>&) { return movedBy(sx, sy); },
                       2,
                       false});
     }
@@ -345,36 +349,27 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
   if (movedRight && movedDown)
     list.push_back({LikelyCause::Shift,
                     {tileVector(*movedRight, tiles), tileVector(*movedDown, tiles)},
-                    [](const std::vector<double>& c) {
-                      return "the image is moved by about (" + signedNumber(c[0]) + ", " +
-                             signedNumber(c[1]) +
-                             ") pixels (right, down) against the reference: look at where a "
-                             "pixel's centre is and which pixels a sample reaches";
-                    }});
-  if (const Image* wider = layer(pattern::kWiderFilter))
+                    [](const std::vector<double>& c) { return movedBy(c[0], c[1]); }});
+  if (const Image* wider = layer(pattern::kWiderFilter)) {
     // The filter's width and, beside it, the reference's Laplacian: a profile of another shape
     // moves light at edges as neither does alone.
     list.push_back({LikelyCause::Edges,
                     {tileVector(*wider, tiles), tileVector(laplacian, tiles)},
                     [](const std::vector<double>& c) {
                       return std::string(
-                                 "the differences sit at edges: the filter's profile has "
-                                 "another shape (") +
+                                 "the differences sit at edges: the filter's profile "
+                                 "has another shape (") +
                              (c[0] > 0 ? "wider" : "narrower") +
-                             " than it should be, in effect); look at the filter's formula, "
-                             "its radius, and which pixels a sample's splat reaches";
+                             " than it should be, in effect); look at the filter's formula, its "
+                             "radius, and which pixels a sample's splat reaches";
                     }});
-  if (const Image* wider = layer(pattern::kWiderFilter))
     list.push_back(
         {LikelyCause::Edges, {tileVector(*wider, tiles)}, [](const std::vector<double>& c) {
            // 1.25 / 0.8 is e^0.446: a = 1 is a filter e^0.446 times as wide.
-           return std::string(
-                      "the differences sit at edges: the image looks as if "
-                      "its filter were about ") +
-                  ratio(std::exp(0.446 * c[0])) +
-                  " times as wide as it should be; look at the filter's profile and "
-                  "radius, and at which pixels a sample's splat reaches";
+           return "the differences sit at edges: the image looks as if its filter were about " +
+                  ratio(std::exp(0.446 * c[0])) + " times as wide as it should be; " + kFilterHint;
          }});
+  }
   // A mask's light may be off by a factor that changes across the image (a pdf that is wrong for
   // one emitter, a cosine left out): the same mask times a smooth field, 1, u, v, u², uv, v² in
   // image coordinates, with its price in fitted numbers.
@@ -410,6 +405,12 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
 
 Diagnosis named(LikelyCause cause, double share, std::string explanation) {
   return {cause, share, std::move(explanation)};
+}
+
+// " (this pattern explains 83.8% of the difference beyond noise)"
+std::string explaining(const char* what, double share) {
+  return std::string(" (") + what + " explains " + percent(share) +
+         " of the difference beyond noise)";
 }
 
 // Hard failures: the image cannot be fitted; say what they point at.
@@ -575,18 +576,13 @@ Diagnosis diagnoseDifference(const DiagnosisInput& input, const Comparison& comp
   const double variance = varianceRatio(input, tiles);
   const double noiseShare = variance > 1.0 ? std::min(1.0, n * (variance - 1.0) / excess) : 0.0;
   const bool noisier = variance > kNoiseRatio || (variance > 0.0 && variance < 1.0 / kNoiseRatio);
-  const std::string noise =
-      "the mean agrees but the noise does not (your render's own variance is " + ratio(variance) +
-      " times the reference's): look at how samples are drawn (which dimensions, which "
-      "directions for which pdf) or whether some are dropped";
   if (noisier && noiseShare >= kMinimumShare && noiseShare > best.explainedShare)
     return named(LikelyCause::Noise, noiseShare,
-                 noise + " (this explains " + percent(noiseShare) +
-                     " of the difference beyond "
-                     "noise)");
+                 "the mean agrees but the noise does not (your render's own variance is " +
+                     ratio(variance) + " times the reference's): " + kSamplingHint +
+                     explaining("this", noiseShare));
   if (bestScore > 0.0 && best.explainedShare >= kMinimumShare) {
-    best.explanation += " (this pattern explains " + percent(best.explainedShare) +
-                        " of the difference beyond noise)";
+    best.explanation += explaining("this pattern", best.explainedShare);
     return best;
   }
   // Without the renders' own variances: far more difference than noise, no pattern for it, and
@@ -595,9 +591,8 @@ Diagnosis diagnoseDifference(const DiagnosisInput& input, const Comparison& comp
       neighbourCorrelation(y, tileColumns) < kMostNoiseCorrelation)
     return named(LikelyCause::Noise, 1.0 - best.explainedShare,
                  "the differences follow no pattern, and there are " + ratio(lossOfY / n) +
-                     " times as many as noise makes: the mean agrees but the noise does not; "
-                     "look at how samples are drawn (which dimensions, which directions for "
-                     "which pdf) or whether some are dropped");
+                     " times as many as noise makes: the mean agrees but the noise does not; " +
+                     kSamplingHint);
   const std::string bestName =
       best.explanation.empty() ? "none" : std::string(likelyCauseName(best.cause));
   return named(LikelyCause::Unknown, 0.0,

@@ -37,6 +37,7 @@ const char* likelyCauseName(LikelyCause cause);
 // Masks a grading reference may hold beside its mean, by layer name (grading_reference.h makes
 // them). Each is an image of the same size; a missing one only removes its candidate.
 namespace pattern {
+constexpr const char* kPrefix = "pattern.";  // every pattern layer's name starts with it
 // Not a pattern to fit: the mean of the reference renders' own per-pixel variance estimates, which
 // a render's own estimate is held against before its difference is called `noise`.
 constexpr const char* kRenderVariance = "pattern.renderVariance";

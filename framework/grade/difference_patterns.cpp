@@ -56,8 +56,7 @@ Image escapedBackground(const GradingCase& gradingCase, const RayTracer& tracer)
   return result;
 }
 
-}  // namespace
-
+// Every tile's pixels replaced by the tile's mean: how the patterns are stored.
 Image tileAveraged(const Image& image, int tileSize) {
   Image result(image.width, image.height);
   for (const TileBounds& t : tilesOf(image.width, image.height, tileSize)) {
@@ -68,10 +67,14 @@ Image tileAveraged(const Image& image, int tileSize) {
   return result;
 }
 
+}  // namespace
+
 std::map<std::string, Image> makeDifferencePatterns(const GradingCase& gradingCase,
                                                     const RayTracer& tracer,
-                                                    const Image& referenceMean) {
+                                                    const Image& referenceMean,
+                                                    const Image& renderVariance) {
   std::map<std::string, Image> patterns;
+  if (!renderVariance.pixels.empty()) patterns[pattern::kRenderVariance] = renderVariance;
   patterns[pattern::kEscaped] = escapedBackground(gradingCase, tracer);
   const uint64_t seed = kPatternSeed;
   if (gradingCase.stage == 1) {
@@ -115,9 +118,9 @@ std::map<std::string, Image> makeDifferencePatterns(const GradingCase& gradingCa
     const Image m0 = renderVariant(gradingCase, tracer, emitted, seed);
     const Image m1 = renderVariant(gradingCase, tracer, direct, seed + 1);
     patterns[pattern::kDirect] = difference(m1, m0);
-    const auto depthParam = gradingCase.params.find(depth);
-    const bool bounces = depthParam == gradingCase.params.end() || depthParam->second != "1";
-    if (bounces) patterns[pattern::kIndirect] = difference(referenceMean, m1);
+    const ParamValues params =
+        gradingCase.recipe(Variant::Reference, EarlierStages::Own, seed).params;
+    if (params.integer(depth) != 1) patterns[pattern::kIndirect] = difference(referenceMean, m1);
     // Each emitter's direct light on its own (the others dark), where there are several: a pdf
     // that does not match the picking rule is off by a factor of each emitter's own.
     std::vector<size_t> emissive;

@@ -20,11 +20,11 @@
 
 namespace pathway {
 
-// Every tile's pixels replaced by the tile's mean: how the patterns are stored.
-Image tileAveraged(const Image& image, int tileSize);
-
+// `renderVariance`: the mean of the replicates' own per-pixel variance estimates, stored as
+// pattern.renderVariance (not fitted: held against a render's own).
 std::map<std::string, Image> makeDifferencePatterns(const GradingCase& gradingCase,
                                                     const RayTracer& tracer,
-                                                    const Image& referenceMean);
+                                                    const Image& referenceMean,
+                                                    const Image& renderVariance);
 
 }  // namespace pathway

@@ -68,7 +68,7 @@ std::string general(double value) {
 
 // Capped p-values (Bonferroni, Šidák) read "> 0.99", not "1".
 std::string pValue(double p) {
-  return p > 0.99 ? "&gt; 0.99" : general(p);
+  return p > kLargestShownP ? "&gt; " + general(kLargestShownP) : general(p);
 }
 
 const char* causeOf(const CaseResult& c) {

@@ -26,7 +26,7 @@ std::map<std::string, std::string> toMap(const ImageMetadata& metadata) {
 GradingReference makeGradingReference(const GradingCase& gradingCase, const RayTracer& tracer,
                                       const std::function<void(int)>& onReplicate) {
   std::vector<Image> replicates;
-  Image ownVariance;  // the replicates' own per-pixel variance estimates, summed
+  Image ownVariance;  // the mean of the replicates' own per-pixel variance estimates
   GradingReference reference;
   double seconds = 0.0, rays = 0.0;
   for (int i = 0; i < kReferenceReplicates; ++i) {
@@ -54,9 +54,7 @@ GradingReference makeGradingReference(const GradingCase& gradingCase, const RayT
     reference.mean.pixels[p] = Color(sum / double(replicates.size()));
   }
   reference.tileVariance = replicateTileVariance(replicates, gradingCase.tileSize);
-  reference.patterns = makeDifferencePatterns(gradingCase, tracer, reference.mean);
-  if (!ownVariance.pixels.empty())
-    reference.patterns[pattern::kRenderVariance] = tileAveraged(ownVariance, gradingCase.tileSize);
+  reference.patterns = makeDifferencePatterns(gradingCase, tracer, reference.mean, ownVariance);
   reference.blockSize = ComparisonSettings().omnibusBlockSize;
   reference.blockVariance = replicateTileVariance(replicates, reference.blockSize);
   reference.blockCorrelation = replicateBlockCorrelation(replicates, reference.blockSize);
@@ -127,7 +125,7 @@ GradingReference readGradingReference(const std::string& path) {
   reference.tileVariance = std::move(loaded.layers["tileVariance"]);
   reference.blockVariance = std::move(loaded.layers["blockVariance"]);
   for (auto& [name, image] : loaded.layers)
-    if (name.rfind("pattern.", 0) == 0) reference.patterns[name] = std::move(image);
+    if (name.rfind(pattern::kPrefix, 0) == 0) reference.patterns[name] = std::move(image);
   reference.metadata = std::move(loaded.metadata);
   return reference;
 }

@@ -37,20 +37,16 @@ double mean(const Image& image) {
   return image.pixels.empty() ? 0.0 : sum / image.pixels.size();
 }
 
-// "p = 0.0123"; p-values capped at 1 (Bonferroni, Šidák) read "p > 0.99".
-std::string formatP(double p) {
-  if (p > 0.99) return "p > 0.99";
-  std::ostringstream out;
-  out.precision(3);
-  out << "p = " << p;
-  return out.str();
-}
-
 std::string formatNumber(double value) {
   std::ostringstream out;
   out.precision(3);
   out << value;
   return out.str();
+}
+
+// "p = 0.0123"; p-values capped at 1 (Bonferroni, Šidák) read "p > 0.99".
+std::string formatP(double p) {
+  return p > kLargestShownP ? "p > " + formatNumber(kLargestShownP) : "p = " + formatNumber(p);
 }
 
 // The test statistic of one tile (or omnibus block), per channel.

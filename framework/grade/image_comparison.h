@@ -62,6 +62,10 @@ struct ComparisonInput {
   uint64_t droppedSamples = 0;         // non-finite samples the render dropped
 };
 
+// p-values above this print as "p > 0.99": the corrections cap them at 1, which reads as a
+// certainty they are not.
+constexpr double kLargestShownP = 0.99;
+
 struct TileVerdict {
   int x0, y0, x1, y1;  // pixels [x0, x1) x [y0, y1)
   Color t{0.0f};       // per channel
