@@ -22,14 +22,24 @@ class AmbientOcclusion4D : public Integrator {
 
   Color Li(const Ray& cameraRay, SampleStream& samples,
            const RenderContext& context) const override {
-    // Dimensions 0-1 of this sample already placed the eye ray in the pixel.
+    // Dimensions 0-1 of this sample already placed the eye ray in the pixel (the renderer did
+    // that). Draw the AO direction's pair HERE, before the eye ray is traced: draw first, then
+    // decide. Every sample then takes dimensions 2-3, the ones stratified together with 0-1 in
+    // one 4D point, for the AO direction, whether its eye ray hits or misses (stage 3 README,
+    // "How a sample's numbers are handed out"). Nothing is drawn after a miss in this stage, so
+    // drawing the pair after the miss test would give the same image; the habit matters once
+    // more numbers follow, as in stage 5.
+    PATHWAY_TODO(
+        "draw the AO direction's pair here (dimensions 2-3 of the same sample), then return one "
+        "AO estimate below (your stage 2 function is stage2_.ambientOcclusionSample)");
     const auto hit = context.intersect(cameraRay, RayKind::Primary);
     if (!hit) return context.background();
-    PATHWAY_TODO(
-        "take the AO direction from dimensions 2-3 of the same sample and return "
-        "one AO estimate (your stage 2 function is stage2_.ambientOcclusionSample)");
+    // One sample's estimate: the pair gives a direction ω with density p(ω) = cos θ / π, and
+    // V·cos θ / (π·p(ω)) is the one-sample estimate of AO at the hit (= V: the cosines cancel).
+    // Stage 1's splat weighs it by the filter, exactly as in stage 2 with M = 1; only where the
+    // numbers come from has changed.
     (void)samples, (void)aoDistance_, (void)stage2_;
-    // Placeholder: the surface lit from the eye.
+    // Placeholder: the surface lit from the eye. Replace it with the AO estimate.
     return Color(eyeLightCosine(*hit, cameraRay));
   }
 

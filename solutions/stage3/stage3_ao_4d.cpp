@@ -19,11 +19,20 @@ class AmbientOcclusion4D : public Integrator {
 
   Color Li(const Ray& cameraRay, SampleStream& samples,
            const RenderContext& context) const override {
-    // Dimensions 0-1 of this sample placed the eye ray in the pixel (the renderer did that);
-    // dimensions 2-3 of the SAME 4D point choose the AO direction.
+    // Dimensions 0-1 of this sample already placed the eye ray in the pixel (the renderer did
+    // that). Draw the AO direction's pair HERE, before the eye ray is traced: draw first, then
+    // decide. Every sample then takes dimensions 2-3, the ones stratified together with 0-1 in
+    // one 4D point, for the AO direction, whether its eye ray hits or misses (stage 3 README,
+    // "How a sample's numbers are handed out"). Nothing is drawn after a miss in this stage, so
+    // drawing the pair after the miss test would give the same image; the habit matters once
+    // more numbers follow, as in stage 5.
     const Vec2 directionSample = samples.next2D();
     const auto hit = context.intersect(cameraRay, RayKind::Primary);
     if (!hit) return context.background();
+    // One sample's estimate: the pair gives a direction ω with density p(ω) = cos θ / π, and
+    // V·cos θ / (π·p(ω)) is the one-sample estimate of AO at the hit (= V: the cosines cancel).
+    // Stage 1's splat weighs it by the filter, exactly as in stage 2 with M = 1; only where the
+    // numbers come from has changed.
     return Color(stage2_.ambientOcclusionSample(context, *hit, directionSample, aoDistance_));
   }
 
