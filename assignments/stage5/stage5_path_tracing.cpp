@@ -12,8 +12,9 @@
 //  - Russian roulette: after a few bounces a path survives with probability q and its weight is
 //    divided by q. The expected value is unchanged, and paths end without a hard depth cut.
 //
-// Direct light from a point y with normal n_y on an emitter, picked with density p_A(y) per area:
-//     L_e(y → x) · (ρ/π) · cos θ_x · cos θ_y / |x - y|^2 / p_A(y),   if y is visible from x.
+// The maths each part needs is derived in a comment where that part is written: the uniform
+// point on a triangle in sampleLight, the area form of direct light in directLight, the path's
+// weights and Russian roulette above Li.
 #include <cmath>
 
 #include "render/stage_api.h"
@@ -26,6 +27,16 @@ namespace {
 LightSample sampleLight(const EmitterPicker& lights, float uPick, Vec2 uPoint) {
   const EmitterPicker::Pick pick = lights.pick(uPick);
   const EmissiveTriangle& e = *pick.emitter;  // corners e.p0, e.p1, e.p2; e.normal, e.area
+  // A uniform point on e from uPoint = (u1, u2). Write a point of the triangle as
+  //     y = (1 - s)·p0 + s·((1 - t)·p2 + t·p1),   s, t in [0, 1]:
+  // s slides a segment from the corner p0 (s = 0) to the opposite edge (s = 1), t runs along it.
+  // The segment at s is s times as long as that edge, so the strip [s, s + ds] has an area
+  // proportional to s·ds: for a uniform point, s has the marginal density 2s, not 1. Its CDF is
+  // s², so s = √u1 (inverting the CDF), and t = u2 is uniform along the segment. In barycentric
+  // coordinates: b0 = 1 - s, b1 = u2·s, b2 = 1 - b0 - b1. (Without the square root the points
+  // crowd towards p0.) The point is uniform on e (density 1 / area) and e was picked with
+  // pick.probability, so its density per unit area over all emitters is
+  //     p_A(y) = pick.probability / e.area.
   PATHWAY_TODO("a uniformly distributed point on triangle e and its density per unit area");
   (void)uPoint;
   LightSample light;  // placeholder: the triangle's first corner, with a made-up density
@@ -45,10 +56,34 @@ class PathTracer : public Integrator {
         lights_(setup.scene, setup.params.choice("light-pick")),
         stage2_(setup.kit.stage2()) {}
 
+  // The path's weights. At every hit the reflected light ∫_Ω L(ω) · brdf · cos θ dω is
+  // estimated with ONE direction ω from stage 2's cosine-weighted sampler: brdf · L(ω) · cos θ /
+  // p(ω), where p(ω) = cos θ / π and brdf = ρ/π, so brdf · cos θ / p = ρ. The throughput (what
+  // light found further along the path is multiplied by) takes that factor at every bounce, and
+  // 1/q at every roulette survival. The sample's value is the sum, over the hits of the path, of
+  // throughput · (the emission counted there + the NEE estimate there), plus throughput ·
+  // background when the path leaves the scene.
+  //
+  // Russian roulette. If X estimates the rest of the path, going on with probability q and
+  // using X / q (else 0) has the mean q · E[X] / q + (1 - q) · 0 = E[X], for any 0 < q <= 1.
+  // The rule here: from the rr-depth-th bounce ray on (bounce + 1 >= rouletteDepth_, bounce 0
+  // being the camera ray's hit), once the throughput includes this bounce's factor,
+  //     q = min(0.95, the largest component of the throughput)   (maxComponent);
+  // the path goes on when samples.next1D() < q, its throughput divided by q. q < 1, so even a
+  // path between white walls ends; a black throughput (q = 0) always ends.
+  //
+  // The sample's numbers, in this order at every hit, the same in every sample (stage 5 README):
+  //   - at the depth limit (maxDepth_ >= 0 and bounce >= maxDepth_) the path ends: none;
+  //   - NEE (only when nextEventEstimation_): directLight() draws next1D() for the emitter and
+  //     next2D() for the point on it, even when the scene has no emitter;
+  //   - next2D(): the continuation direction;
+  //   - next1D(): the roulette number, whenever roulette is on at this bounce (whatever q is).
+  // A miss ends the path before anything is drawn.
+  //
   // Useful: hit->emitted, hit->albedo, hit->normal; directLight() below (NEE);
   // stage2_.sampleCosineHemisphere(samples.next2D()), stage2_.cosineHemispherePdf(cos θ);
-  // Frame(hit->normal).toWorld(local); hit->spawnRay(direction); samples.next1D() for Russian
-  // roulette; maxDepth_, rouletteDepth_, nextEventEstimation_.
+  // Frame(hit->normal).toWorld(local); hit->spawnRay(direction); samples.next1D() and
+  // maxComponent(throughput) for Russian roulette; maxDepth_, rouletteDepth_, nextEventEstimation_.
   Color Li(const Ray& cameraRay, SampleStream& samples,
            const RenderContext& context) const override {
     Color radiance(0.0f);
@@ -82,6 +117,18 @@ class PathTracer : public Integrator {
     if (lights_.empty()) return Color(0.0f);
     const LightSample light = sampleLight(lights_, uPick, uPoint);
 
+    // Next-event estimation. The light reflected at x straight from the emitters is
+    //     L_d = ∫_Ω L_e(ω) · brdf · cos θ_x dω     (over the directions ω that meet an emitter).
+    // y comes with a density per unit AREA, so integrate over the emitters' area instead. Seen
+    // from x, a patch dA at y, at distance d = |x - y|, whose normal makes the angle θ_y with the
+    // line to x, covers the solid angle dω = |cos θ_y| dA / d² (the patch's area across the line
+    // of sight, over d²). Hence
+    //     L_d = ∫_A L_e · brdf · cos θ_x · |cos θ_y| / d² · V(x, y) dA,
+    // and one point y drawn with density p_A(y) estimates it by
+    //     L_e · brdf · cos θ_x · |cos θ_y| / (d² · p_A(y)),   or 0 when something blocks x-y.
+    // (Said the other way round: per unit solid angle at x, y has density p_A · d² / |cos θ_y|.)
+    // Only points in front of the surface count (cos θ_x > 0), and a one-sided emitter lights
+    // only the side its front faces (cos θ_y > 0, θ_y measured from light.normal).
     PATHWAY_TODO("direct light: Le * brdf * cos_x * cos_y / (distance^2 * pdfArea) if visible");
     (void)hit, (void)brdf, (void)light, (void)context;
     return Color(0.0f);  // placeholder: no direct light
