@@ -45,6 +45,10 @@ float gaussianFilter(float x, float sigma) {
 }
 
 // ---- The splat: one sample at film position p (in pixels) with radiance L. ----
+// The estimator: n samples p_i spread over the film with a constant density pdf estimate the
+// two integrals of I_j by (1/n) Σ_i f_j(p_i)·L(p_i) / pdf and (1/n) Σ_i f_j(p_i) / pdf. In their
+// ratio, Σ_i f_j(p_i)·L(p_i) / Σ_i f_j(p_i), n and pdf cancel: so each sample adds f_j·L and f_j,
+// and the film divides.
 // Pixel (x, y) covers [x, x+1) x [y, y+1); its centre is (x + 0.5, y + 0.5).
 // filter.radius() is the support; filter.evaluate(dx, dy) is f(dx)·f(dy).
 // film.addSample(x, y, weight, radiance) adds weight·radiance and weight to pixel (x, y)

@@ -17,6 +17,12 @@ namespace pathway {
 namespace {
 
 // A direction in the local frame (z along the normal) with density cos θ / π, from u in [0,1)^2.
+// Why cos θ / π: a density must integrate to 1, and ∫_Ω cos θ dω = π over the hemisphere.
+// Malley's method draws it: take a point uniform on the unit disk (density 1/π per unit area)
+// and lift it straight up onto the hemisphere. The directions in dω land on a patch of the disk
+// of area cos θ dω (their projection along z), so a direction has density (1/π)·cos θ. A uniform
+// point on the disk: the share of the disk within radius r is r², so r = √u1 (inverting that
+// CDF) and the angle is φ = 2π·u2; lifted, z = √(1 - r²) = cos θ.
 Vec3 sampleCosineHemisphere(Vec2 u) {
   PATHWAY_TODO("cosine-weighted hemisphere sampling (e.g. Malley's method, see README.md)");
   (void)u;
@@ -30,6 +36,7 @@ float cosineHemispherePdf(float cosTheta) {
 }
 
 // One AO direction's estimate V(P, ω)·cos θ / (π·p(ω)).
+// It is the one-sample Monte Carlo estimate g(ω) / p(ω) of AO(P) = ∫_Ω g dω, g = V·cos θ / π.
 // Useful: Frame(hit.normal).toWorld(local) turns a local direction into a world one;
 // hit.spawnRay(direction, tMax) makes a ray that cannot hit its own surface;
 // context.occluded(ray, RayKind::Secondary) says whether anything blocks it.
@@ -49,6 +56,9 @@ class NestedAmbientOcclusion : public Integrator {
            const RenderContext& context) const override {
     const auto hit = context.intersect(cameraRay, RayKind::Primary);
     if (!hit) return context.background();
+    // The inner integral, AO at P, with M directions, each from its own 2D sample:
+    //     AO(P) ≈ (1/M) Σ_k V(P, ω_k)·cos θ_k / (π·p(ω_k));
+    // the outer one, over the screen, is stage 1's filtered splat of this value.
     PATHWAY_TODO("average M = aoRays_ AO samples, each with its own samples.next2D()");
     (void)samples, (void)aoRays_, (void)aoDistance_;
     // Placeholder: the surface lit from the eye, so you can see where the AO will go.

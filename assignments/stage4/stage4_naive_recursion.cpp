@@ -29,6 +29,10 @@ class NaiveRecursion : public Integrator {
 
  private:
   // Radiance along `ray`, where `bounce` bounces have happened before it.
+  // The estimator: N directions ω_i drawn with density p (stage 2's cosine-weighted sampler),
+  //     L(x → v) ≈ E(x → v) + (1/N) Σ_i (ρ/π) · L(x ← ω_i) · cos θ_i / p(ω_i),
+  // where each L(x ← ω_i) is the same estimate one bounce deeper (at depth D: emission only).
+  // With p = cos θ / π each term is ρ · L(x ← ω_i): the cosine and π cancel against the density.
   // Useful: hit->emitted, hit->albedo, hit->normal; Frame(normal).toWorld(local);
   // your stage 2's stage2_.sampleCosineHemisphere(samples.next2D()) and its density
   // stage2_.cosineHemispherePdf(cos θ); hit->spawnRay(direction); context.intersect(ray, kind)

@@ -45,6 +45,10 @@ float gaussianFilter(float x, float sigma) {
 }
 
 // ---- The splat: one sample at film position p (pixels) with radiance L. ----
+// The estimator: n samples p_i spread over the film with a constant density pdf estimate the
+// two integrals of I_j by (1/n) Σ_i f_j(p_i)·L(p_i) / pdf and (1/n) Σ_i f_j(p_i) / pdf. In their
+// ratio, Σ_i f_j(p_i)·L(p_i) / Σ_i f_j(p_i), n and pdf cancel: so each sample adds f_j·L and f_j,
+// and the film divides.
 void splat(FilmBlock& film, Vec2 p, const Color& radiance, const PixelFilter& filter) {
   // Pixel j covers [j, j+1), so its centre is at j + 0.5; it is in reach when
   // |p - (j + 0.5)| <= radius, i.e. j in [p - 0.5 - radius, p - 0.5 + radius].

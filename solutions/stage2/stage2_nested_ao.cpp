@@ -16,8 +16,13 @@
 namespace pathway {
 namespace {
 
-// Malley's method: a uniform point on the unit disk, lifted onto the hemisphere, has density
-// cos θ / π. r = sqrt(u1) makes the disk point uniform in area.
+// A direction in the local frame (z along the normal) with density cos θ / π, from u in [0,1)^2.
+// Why cos θ / π: a density must integrate to 1, and ∫_Ω cos θ dω = π over the hemisphere.
+// Malley's method draws it: take a point uniform on the unit disk (density 1/π per unit area)
+// and lift it straight up onto the hemisphere. The directions in dω land on a patch of the disk
+// of area cos θ dω (their projection along z), so a direction has density (1/π)·cos θ. A uniform
+// point on the disk: the share of the disk within radius r is r², so r = √u1 (inverting that
+// CDF) and the angle is φ = 2π·u2; lifted, z = √(1 - r²) = cos θ.
 Vec3 sampleCosineHemisphere(Vec2 u) {
   const float r = std::sqrt(u.x);
   const float phi = 2.0f * kPi * u.y;
@@ -28,7 +33,8 @@ float cosineHemispherePdf(float cosTheta) {
   return cosTheta > 0.0f ? cosTheta * kInvPi : 0.0f;
 }
 
-// One AO direction: V(P, ω)·cos θ / (π·p(ω)).
+// One AO direction's estimate V(P, ω)·cos θ / (π·p(ω)).
+// It is the one-sample Monte Carlo estimate g(ω) / p(ω) of AO(P) = ∫_Ω g dω, g = V·cos θ / π.
 float ambientOcclusionSample(const RenderContext& context, const SurfaceHit& hit, Vec2 u,
                              float distance) {
   const Vec3 local = sampleCosineHemisphere(u);
@@ -51,7 +57,9 @@ class NestedAmbientOcclusion : public Integrator {
            const RenderContext& context) const override {
     const auto hit = context.intersect(cameraRay, RayKind::Primary);
     if (!hit) return context.background();
-    // The inner integral: M directions for this one eye sample, each with its own 2D sample.
+    // The inner integral, AO at P, with M directions, each from its own 2D sample:
+    //     AO(P) ≈ (1/M) Σ_k V(P, ω_k)·cos θ_k / (π·p(ω_k));
+    // the outer one, over the screen, is stage 1's filtered splat of this value.
     float sum = 0.0f;
     for (int j = 0; j < aoRays_; ++j)
       sum += ambientOcclusionSample(context, *hit, samples.next2D(), aoDistance_);

@@ -6,9 +6,6 @@
 // estimator casts N rays at every hit and recurses into each of them down to a depth D, so a
 // single camera sample costs 1 + N + N^2 + ... + N^D rays. That exponential growth is the point of
 // this stage; the framework refuses requests over a ray budget before rendering starts.
-//
-// With cosine-weighted directions (stage 2), each branch's estimate ρ/π · L · cos θ / p equals
-// ρ · L: the cosine and π cancel against the density.
 #include "render/stage_api.h"
 
 namespace pathway {
@@ -28,6 +25,10 @@ class NaiveRecursion : public Integrator {
 
  private:
   // Radiance along `ray`, where `bounce` bounces have happened before it.
+  // The estimator: N directions ω_i drawn with density p (stage 2's cosine-weighted sampler),
+  //     L(x → v) ≈ E(x → v) + (1/N) Σ_i (ρ/π) · L(x ← ω_i) · cos θ_i / p(ω_i),
+  // where each L(x ← ω_i) is the same estimate one bounce deeper (at depth D: emission only).
+  // With p = cos θ / π each term is ρ · L(x ← ω_i): the cosine and π cancel against the density.
   Color trace(const Ray& ray, RayKind kind, int bounce, SampleStream& samples,
               const RenderContext& context) const {
     const auto hit = context.intersect(ray, kind);
