@@ -192,14 +192,14 @@ TEST_F(ErrorPlotFiles, LoadsAnExrAndRefusesWhatItCannotUse) {
   FilmImages images;
   images.color = Image(6, 4);
   for (Color& pixel : images.color.pixels) pixel = Color(0.25f);
-  writeImageFile(path("ref.exr"), images,
-                 {{"pathway:integrator", "stage5@ref"},
-                  {"pathway:spp", "4096"},
-                  {"pathway:filter", "tent"},
-                  {"pathway:filterRadius", "1.000000"},
-                  {"pathway:seed", "7"},
-                  {"pathway:sampler", "sobol"}},
-                 0.0f);
+  RenderMetadata made;
+  made.integrator = "stage5@ref";
+  made.spp = 4096;
+  made.filter = FilterType::Tent;
+  made.filterRadius = 1.0f;
+  made.seed = 7;
+  made.sampler = SamplerType::Sobol;
+  writeImageFile(path("ref.exr"), images, made, 0.0f);
   const ReferenceView view{"scene.gltf", CameraPose{}, FilterType::Box, 0.5f, {}};
   const ReferenceImage reference = loadReference(path("ref.exr"), view);
   EXPECT_EQ(reference.image.width, 6);

@@ -33,7 +33,8 @@ int run(const MergeOptions& options) {
   }
   if (!options.quiet) {
     std::printf("merged %zu parts: samples %u:%u of %u, %dx%d\n", options.parts.size(),
-                merged.begin, merged.end, merged.whole, merged.film.width(), merged.film.height());
+                merged.metadata.sampleBegin, merged.metadata.sampleEnd,
+                merged.metadata.samplesOfWhole, merged.film.width(), merged.film.height());
     for (const std::string& output : options.outputs) std::printf("wrote %s\n", output.c_str());
   }
   return 0;

@@ -33,7 +33,7 @@ struct RenderResult {
   RenderStats stats;
   size_t unresolvedPixels = 0;    // Σw ≈ 0 (negative filter lobes at low spp); written as 0
   std::vector<TodoRecord> todos;  // unfinished stage code that ran during this render
-  ImageMetadata metadata;         // settings and counters, for the EXR header
+  RenderMetadata metadata;        // settings and counters, for the EXR header
 };
 
 class RenderSession {
@@ -50,7 +50,7 @@ class RenderSession {
   const IntegratorInfo& integrator() const { return info_; }
   const RenderRecipe& recipe() const { return recipe_; }  // with every parameter value filled in
 
-  // The film so far, developed, with counters and "pathway:*" metadata (`todos`: the unfinished
+  // The film so far, developed, with counters and metadata (`todos`: the unfinished
   // stage code that ran, which the metadata counts).
   RenderResult develop(std::vector<TodoRecord> todos);  // (merges the renderer's film)
 
