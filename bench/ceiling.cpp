@@ -11,6 +11,7 @@
 #include "raw_path_tracer.h"
 #include "render/render_choices.h"
 #include "scene/gltf_loader.h"
+#include "stages/stage5.h"
 
 namespace pathway::bench {
 namespace {
@@ -117,8 +118,9 @@ int benchCeiling(const CeilingOptions& options) {
   rawSettings.width = width;
   rawSettings.height = height;
   rawSettings.samplesPerPixel = spp;
-  rawSettings.maxDepth = recipe.params.integer("max-depth");
-  rawSettings.rouletteDepth = recipe.params.integer("rr-depth");
+  const Stage5Params stage5Params = stage5().read(recipe.params);
+  rawSettings.maxDepth = stage5Params.maxDepth;
+  rawSettings.rouletteDepth = stage5Params.rouletteDepth;
   rawSettings.seed = recipe.settings.seed;
 
   std::printf(

@@ -126,9 +126,9 @@ TEST(ErrorHistory, AReferenceGoesStaleWhenTheViewChanges) {
   EXPECT_NE(referenceProblem(reference, otherScene).find("another scene"), std::string::npos);
 
   // Parameters: a longer AO ray changes the expected image, more AO rays per sample do not.
-  const std::vector<ParamSpec> aoParams = {
-      ParamSpec::integer("ao-rays", 4, 1, 64, "").keepingTheExpectedImage(),
-      ParamSpec::real("ao-distance", 0.25, 0.0, 10.0, "")};
+  const std::vector<OptionSpec> aoParams = {
+      OptionSpec::integer("ao-rays", 4, 1, 64, "").keepingTheExpectedImage(),
+      OptionSpec::real("ao-distance", 0.25, 0.0, 10.0, "")};
   LaneFrame ao = flatFrame(6, 1, 0.1, 1.0f);
   ao.params = ParamValues(aoParams);
   const ReferenceImage aoReference = flatReference(ao, 1.0f);

@@ -38,11 +38,11 @@ void listIntegrators() {
     std::printf("\n  %-12s stage %d, %s, sampler %s: %s\n", info->name.c_str(), info->stage,
                 variantName(info->variant), samplerTypeName(info->defaultSampler).c_str(),
                 info->summary.c_str());
-    for (const ParamSpec& spec : info->params)
+    for (const OptionSpec& spec : info->params)
       std::printf(
           "      %-16s %s (default %s, %s %s)\n", spec.name.c_str(), spec.help.c_str(),
           spec.format(spec.defaultValue).c_str(),
-          spec.kind == ParamKind::Integer || spec.kind == ParamKind::Real ? "range" : "choose",
+          spec.kind == OptionKind::Integer || spec.kind == OptionKind::Real ? "range" : "choose",
           spec.describeRange().c_str());
   }
 }

@@ -33,20 +33,20 @@ const IntegratorInfo* findInfo(const std::string& name) {
 // values typed with Ctrl+click), so the render never sees a value it would refuse.
 void parameterWidgets(ViewerState& state, int lane, const IntegratorInfo& info) {
   if (info.params.empty()) ImGui::TextDisabled("(no parameters)");
-  for (const ParamSpec& spec : info.params) {
+  for (const OptionSpec& spec : info.params) {
     const double value = paramValue(state, lane, info, spec);
     const char* name = spec.name.c_str();
     const ImGuiSliderFlags clamp = ImGuiSliderFlags_AlwaysClamp;
     bool changed = false;
     double result = value;
     switch (spec.kind) {
-      case ParamKind::Switch: {
+      case OptionKind::Toggle: {
         bool on = value != 0.0;
         changed = ImGui::Checkbox(name, &on);
         result = on ? 1.0 : 0.0;
         break;
       }
-      case ParamKind::Choice: {
+      case OptionKind::Choice: {
         const auto chosen = static_cast<size_t>(value);
         if (ImGui::BeginCombo(name, spec.format(value).c_str())) {
           for (size_t i = 0; i < spec.options.size(); ++i) {
@@ -59,7 +59,7 @@ void parameterWidgets(ViewerState& state, int lane, const IntegratorInfo& info) 
         }
         break;
       }
-      case ParamKind::Integer: {
+      case OptionKind::Integer: {
         // 64-bit: some limits (e.g. a ray budget) go far beyond int.
         long long v = static_cast<long long>(value);
         const long long lo = static_cast<long long>(spec.minValue);
@@ -74,7 +74,7 @@ void parameterWidgets(ViewerState& state, int lane, const IntegratorInfo& info) 
         result = static_cast<double>(v);
         break;
       }
-      case ParamKind::Real: {
+      case OptionKind::Real: {
         double v = value;
         ImGuiSliderFlags flags = clamp;
         // Ranges over decades (distances, strengths) are easier to set on a log scale.
@@ -86,7 +86,7 @@ void parameterWidgets(ViewerState& state, int lane, const IntegratorInfo& info) 
         break;
       }
     }
-    const bool typed = spec.kind == ParamKind::Integer || spec.kind == ParamKind::Real;
+    const bool typed = spec.kind == OptionKind::Integer || spec.kind == OptionKind::Real;
     tooltip(spec.help + "\n(default " + spec.format(spec.defaultValue) + ", " +
             spec.describeRange() + (typed ? "; Ctrl+click to type a value)" : ")"));
     if (changed) setParamValue(state, lane, info, spec, result);

@@ -50,9 +50,9 @@ struct ViewerState {
 
 // The pane's value of a parameter: the one set for its stage, else the declared default.
 double paramValue(const ViewerState& state, int lane, const IntegratorInfo& info,
-                  const ParamSpec& spec);
+                  const OptionSpec& spec);
 // Throws PathwayError (naming the parameter and its range) for a value it does not accept.
-void setParamValue(ViewerState& state, int lane, const IntegratorInfo& info, const ParamSpec& spec,
+void setParamValue(ViewerState& state, int lane, const IntegratorInfo& info, const OptionSpec& spec,
                    double value);
 
 // Chooses an integrator for a pane; the left pane's choice also brings its stage's usual sampler.
