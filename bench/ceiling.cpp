@@ -111,7 +111,7 @@ int benchCeiling(const CeilingOptions& options) {
   recipe.settings.width = width;
   recipe.settings.height = height;
   recipe.settings.samplesPerPixel = spp;
-  recipe.settings.samplesPerPass = std::max(1u, spp / 16);  // as `pathway render` splits them
+  recipe.settings.samplesPerPass = samplesPerProgressPass(spp);  // as `pathway render` does
 
   // The raw side takes stage 5's depths from the same checked recipe: they cannot drift apart.
   RawPathSettings rawSettings;

@@ -261,7 +261,7 @@ class ErrorPlotRender : public ::testing::Test {
     for (uint32_t spp : spps) {
       while (session.renderer().stats().samplesPerPixel < spp) session.renderer().renderPass();
       auto frame = std::make_shared<LaneFrame>();
-      RenderResult developed = session.develop({});
+      RenderResult developed = session.develop();
       frame->job = 1;
       frame->scenePath = scene_->scene.sourcePath;
       frame->camera = pose;

@@ -51,7 +51,7 @@ class PartMerge : public ::testing::Test {
     const Camera camera(scene_, recipe.settings.width, recipe.settings.height);
     RenderSession session(tracer_, camera, recipe);
     session.renderer().renderAll();
-    const RenderResult result = session.develop({});
+    const RenderResult result = session.develop();
     const std::string path = (dir_ / ("part" + std::to_string(begin) + "-" + std::to_string(end) +
                                       "-" + std::to_string(seed) + ".exr"))
                                  .string();
@@ -74,7 +74,7 @@ TEST_F(PartMerge, PartsMergeIntoTheImageOfOneRender) {
   const Camera camera(scene_, recipe_.settings.width, recipe_.settings.height);
   RenderSession whole(tracer_, camera, recipe_);
   whole.renderer().renderAll();
-  const RenderResult expected = whole.develop({});
+  const RenderResult expected = whole.develop();
 
   const std::vector<std::string> parts = {writePart(10, 16), writePart(0, 3), writePart(3, 10)};
   const MergedRender merged = mergeParts(parts, false);

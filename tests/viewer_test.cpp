@@ -205,7 +205,7 @@ TEST_F(ViewerWorker, RefusesParameterValuesOutsideTheirDeclarationInsteadOfClamp
 
 TEST(ViewerState, PanelValuesAreCheckedAndShareOneDeclaration) {
   ViewerState state;
-  EXPECT_EQ(state.settings.samplesPerPixel, setting::kViewerSamplesPerPixel.defaultValue);
+  EXPECT_EQ(state.settings.samplesPerPixel, kViewerSamplesPerPixel.defaultAs<uint32_t>());
   const IntegratorInfo& info = findIntegrator("stage5");
   const OptionSpec* lightPick = nullptr;
   for (const OptionSpec& spec : info.params)

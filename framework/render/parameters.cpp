@@ -26,13 +26,13 @@ std::string joinOptions(const std::vector<std::string>& options) {
 
 }  // namespace
 
-OptionSpec OptionSpec::integer(std::string name, long long defaultValue, long long minValue,
-                               long long maxValue, std::string help) {
+OptionSpec OptionSpec::integer(std::string name, long long defaultValue, double minValue,
+                               double maxValue, std::string help) {
   return {std::move(name),
           OptionKind::Integer,
           static_cast<double>(defaultValue),
-          static_cast<double>(minValue),
-          static_cast<double>(maxValue),
+          minValue,
+          maxValue,
           {},
           std::move(help)};
 }
@@ -40,6 +40,13 @@ OptionSpec OptionSpec::integer(std::string name, long long defaultValue, long lo
 OptionSpec OptionSpec::real(std::string name, double defaultValue, double minValue, double maxValue,
                             std::string help) {
   return {std::move(name), OptionKind::Real, defaultValue, minValue, maxValue, {}, std::move(help)};
+}
+
+OptionSpec OptionSpec::withDefault(double value, std::string newHelp) const {
+  OptionSpec spec = *this;
+  spec.defaultValue = value;
+  spec.help = std::move(newHelp);
+  return spec;
 }
 
 OptionSpec OptionSpec::keepingTheExpectedImage() const {
@@ -76,7 +83,8 @@ std::string OptionSpec::format(double value) const {
       return index < options.size() ? options[index] : "?";
     }
     case OptionKind::Integer:
-      return std::to_string(static_cast<long long>(value));
+      if (std::fabs(value) < 9e18) return std::to_string(static_cast<long long>(value));
+      break;  // beyond long long (the seed's range): as a real number
     case OptionKind::Real:
       break;
   }

@@ -32,8 +32,9 @@ struct OptionSpec {
   // shared only across values of parameters that do not (charts, the viewer's error plot).
   bool changesExpectedImage = true;
 
-  static OptionSpec integer(std::string name, long long defaultValue, long long minValue,
-                            long long maxValue, std::string help);
+  // (The bounds are doubles so that a range can reach 2^64, the seed's.)
+  static OptionSpec integer(std::string name, long long defaultValue, double minValue,
+                            double maxValue, std::string help);
   static OptionSpec real(std::string name, double defaultValue, double minValue, double maxValue,
                          std::string help);
   static OptionSpec toggle(std::string name, bool defaultValue, std::string help);
@@ -42,6 +43,14 @@ struct OptionSpec {
 
   // This declaration, marked as one that changes only noise and cost.
   OptionSpec keepingTheExpectedImage() const;
+  // This declaration with another default and help, for a command that uses the same setting
+  // differently (the viewer refines towards a far larger spp than a render takes).
+  OptionSpec withDefault(double value, std::string help) const;
+
+  template <typename T>
+  T defaultAs() const {
+    return static_cast<T>(defaultValue);
+  }
 
   bool isWholeNumber() const { return kind != OptionKind::Real; }
   // True when `value` is one this parameter can take (in range; whole where it must be).

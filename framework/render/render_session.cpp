@@ -66,7 +66,6 @@ RenderSession::RenderSession(const RayTracer& tracer, const Camera& camera,
   char hash[17];
   std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(tracer.sceneHash()));
   sceneHash_ = hash;
-  recipe_.settings.check();
   integratorObject_ = info_.create({recipe_.params, kit_, tracer.scene()});
   renderer_ = std::make_unique<Renderer>(tracer, camera_, *integratorObject_, kit_.stage1(),
                                          recipe_.settings);
@@ -74,13 +73,13 @@ RenderSession::RenderSession(const RayTracer& tracer, const Camera& camera,
 
 RenderSession::~RenderSession() = default;
 
-RenderResult RenderSession::develop(std::vector<TodoRecord> todos) {
+RenderResult RenderSession::develop() {
   RenderResult result;
   const Film& film = renderer_->film();
   film.developAll(result.images.color, result.images.variance, result.images.weight,
                   &result.unresolvedPixels);
   result.stats = renderer_->stats();
-  result.todos = std::move(todos);
+  result.todos = renderer_->todos().records();
   result.metadata = renderMetadata(tracer_.scene().sourcePath, sceneHash_, info_.stage, recipe_,
                                    result.stats, result.unresolvedPixels, result.todos);
   return result;
@@ -88,10 +87,9 @@ RenderResult RenderSession::develop(std::vector<TodoRecord> todos) {
 
 RenderResult runRender(const RayTracer& tracer, const Camera& camera, const RenderRecipe& recipe,
                        const std::function<void(const RenderStats&)>& onPass) {
-  clearTodosHit();  // from here on, every TODO that runs belongs to this render
   RenderSession session(tracer, camera, recipe);
   session.renderer().renderAll(onPass);
-  return session.develop(todosHit());
+  return session.develop();
 }
 
 RenderResult runRender(const RayTracer& tracer, const RenderRecipe& recipe,

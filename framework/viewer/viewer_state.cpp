@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "viewer/viewer_options.h"
+
 namespace pathway {
 namespace {
 
@@ -16,7 +18,7 @@ const IntegratorInfo* find(const std::string& name) {
 
 RenderSettings progressiveSettings() {
   RenderSettings settings;
-  settings.samplesPerPixel = setting::kViewerSamplesPerPixel.defaultValue;
+  settings.samplesPerPixel = kViewerSamplesPerPixel.defaultAs<uint32_t>();
   return settings;
 }
 

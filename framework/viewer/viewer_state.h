@@ -23,7 +23,8 @@ namespace pathway {
 RenderSettings progressiveSettings();
 
 struct ViewerState {
-  std::string integrator[2] = {"stage1", "stage1"};  // left (or only) pane, right pane
+  std::string integrator[2] = {setting::kIntegrator,
+                               setting::kIntegrator};  // left (or only) pane, right pane
   EarlierStages earlierStages[2] = {EarlierStages::Own, EarlierStages::Own};
   // (stage, name) -> value, every value one the parameter accepts (the widgets and the command
   // line refuse others, nothing clamps).
@@ -41,7 +42,8 @@ struct ViewerState {
   float budgetSeconds = 0.0f;   // equal time: per pane; 0: up to the spp target
   float budgetMegaRays = 0.0f;  // equal rays: per pane, in millions; 0: up to the spp target
 
-  uint32_t referenceSpp = setting::kReferenceSamplesPerPixel.defaultValue;  // Make reference
+  uint32_t referenceSpp =
+      setting::kReferenceSamplesPerPixel.defaultAs<uint32_t>();  // Make reference
 
   bool paused = false;
   bool showHelp = false;
