@@ -11,6 +11,7 @@
 #include "raw_path_tracer.h"
 #include "render/render_choices.h"
 #include "scene/gltf_loader.h"
+#include "stages/stage5.h"
 
 namespace pathway::bench {
 namespace {
@@ -110,15 +111,16 @@ int benchCeiling(const CeilingOptions& options) {
   recipe.settings.width = width;
   recipe.settings.height = height;
   recipe.settings.samplesPerPixel = spp;
-  recipe.settings.samplesPerPass = std::max(1u, spp / 16);  // as `pathway render` splits them
+  recipe.settings.samplesPerPass = samplesPerProgressPass(spp);  // as `pathway render` does
 
   // The raw side takes stage 5's depths from the same checked recipe: they cannot drift apart.
   RawPathSettings rawSettings;
   rawSettings.width = width;
   rawSettings.height = height;
   rawSettings.samplesPerPixel = spp;
-  rawSettings.maxDepth = recipe.params.integer("max-depth");
-  rawSettings.rouletteDepth = recipe.params.integer("rr-depth");
+  const Stage5Params stage5Params = stage5().read(recipe.params);
+  rawSettings.maxDepth = stage5Params.maxDepth;
+  rawSettings.rouletteDepth = stage5Params.rouletteDepth;
   rawSettings.seed = recipe.settings.seed;
 
   std::printf(

@@ -39,7 +39,7 @@ struct PcgNumbers {
 }  // namespace
 
 RawPathTracer::RawPathTracer(const Scene& scene, const RawEmbree& embree)
-    : scene_(scene), embree_(embree.handle()), lights_(scene, "area") {
+    : scene_(scene), embree_(embree.handle()), lights_(scene, EmitterWeighting::Area) {
   for (const Mesh& mesh : scene.meshes) {
     const Material& material = scene.materials[mesh.material];
     meshes_.push_back({material.baseColor, material.isEmissive() ? material.emission : Color(0.0f),

@@ -1,6 +1,6 @@
 # Writes OUTPUT, a header defining PATHWAY_STAGE_INTERFACE: a hash of the framework headers a
-# stage file includes (found by the compiler from framework/render/stage_api.h) and of the stage
-# catalog (render/stage_catalog.cpp: the parameters stage files read by name), with their paths
+# stage file includes (found by the compiler from framework/render/stage_api.h) and of the stages'
+# declarations (framework/stages/*.h: the parameters stage files read), with their paths
 # relative to framework/, so the same framework hashes the same wherever it is unpacked. A compiled
 # reference library is sealed with this hash and loaded only by a program with the same one
 # (framework/render/reference_library.h). The build runs it whenever a framework header changes:
@@ -28,8 +28,10 @@ foreach(word IN LISTS words)
     list(APPEND headers ${relative})
   endif()
 endforeach()
+file(GLOB declarations RELATIVE "${FRAMEWORK}" "${FRAMEWORK}/stages/*.h")
+list(APPEND headers ${declarations})
+list(REMOVE_DUPLICATES headers)
 list(SORT headers)
-list(APPEND headers render/stage_catalog.cpp)
 list(LENGTH headers count)
 if(count LESS 5)
   message(FATAL_ERROR "stage-interface.cmake: only ${count} headers found in:\n${rule}")

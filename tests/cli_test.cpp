@@ -85,7 +85,7 @@ TEST_F(Cli, ParametersAreReadByTheirKind) {
       runPathway("render " + kScene + " -i stage5 -p nee=off -p light-pick=area --width 8 " +
                  "--height 8 --spp 1 -q -o " + path("a.exr"));
   ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
-  EXPECT_EQ(readImageFile(path("a.exr")).metadata.at("pathway:params"),
+  EXPECT_EQ(readImageFile(path("a.exr")).metadata.params,
             "max-depth=5 rr-depth=3 nee=off light-pick=area");
 }
 
@@ -96,7 +96,7 @@ TEST_F(Cli, EarlierStagesCanComeFromTheReference) {
                  "--height 8 --spp 1 -q -o " + path("a.exr"));
   if (test::haveReference()) {
     ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
-    EXPECT_EQ(readImageFile(path("a.exr")).metadata.at("pathway:earlierStages"), "reference");
+    EXPECT_EQ(readImageFile(path("a.exr")).metadata.earlierStages, "reference");
   } else {
     // Without reference stages the message says which one is missing, and why.
     EXPECT_EQ(outcome.exitCode, 1);
@@ -145,16 +145,16 @@ TEST_F(Cli, RenderWritesPngAndExrWithSettingsAndCounters) {
   EXPECT_EQ(exr.images.color.height, 30);
   EXPECT_EQ(exr.images.variance.width, 40);
   EXPECT_EQ(exr.images.weight.width, 40);
-  EXPECT_EQ(exr.metadata.at("pathway:integrator"), "stage1");
-  EXPECT_EQ(exr.metadata.at("pathway:spp"), "3");
-  EXPECT_EQ(exr.metadata.at("pathway:seed"), "5");
-  EXPECT_EQ(exr.metadata.at("pathway:primaryRays"), std::to_string(40 * 30 * 3));
+  EXPECT_EQ(exr.metadata.integrator, "stage1");
+  EXPECT_EQ(exr.metadata.spp, 3u);
+  EXPECT_EQ(exr.metadata.seed, 5u);
+  EXPECT_EQ(exr.metadata.primaryRays, 40u * 30 * 3);
   // The student skeleton of stage 1 is unfinished: the render says so and records it. (In a
   // handout assignments/ holds the student's own work, finished or not.)
   if (test::kFullRepository) {
     EXPECT_NE(outcome.output.find("assignments/stage1/stage1_filtering.cpp"), std::string::npos)
         << outcome.output;
-    EXPECT_NE(exr.metadata.at("pathway:todos"), "0");
+    EXPECT_GT(exr.metadata.todos, 0);
   }
   // No temporary files are left next to the outputs.
   size_t files = 0;

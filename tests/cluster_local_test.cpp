@@ -45,10 +45,12 @@ TEST(ClusterLocal, ARenderSplitIntoTasksEqualsOneRender) {
   const LoadedImage single = readImageFile((dir / "single.exr").string());
   // Only the order of the film's additions differs: equal to a float's rounding.
   EXPECT_LE(largestRelativeDifference(single.images.color, merged.images.color), 2.0 / (1 << 23));
-  EXPECT_EQ(merged.metadata.at("pathway:sampleRange"), "0:20");
-  for (const char* counter :
-       {"pathway:primaryRays", "pathway:secondaryRays", "pathway:shadowRays", "pathway:samples"})
-    EXPECT_EQ(merged.metadata.at(counter), single.metadata.at(counter)) << counter;
+  EXPECT_EQ(merged.metadata.sampleBegin, 0u);
+  EXPECT_EQ(merged.metadata.sampleEnd, 20u);
+  EXPECT_EQ(merged.metadata.primaryRays, single.metadata.primaryRays);
+  EXPECT_EQ(merged.metadata.secondaryRays, single.metadata.secondaryRays);
+  EXPECT_EQ(merged.metadata.shadowRays, single.metadata.shadowRays);
+  EXPECT_EQ(merged.metadata.samples, single.metadata.samples);
   for (int task = 0; task < 5; ++task)
     EXPECT_TRUE(
         fs::exists(dir / "merged.cluster/logs" / ("task-" + std::to_string(task) + ".log")));

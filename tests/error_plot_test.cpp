@@ -126,9 +126,9 @@ TEST(ErrorHistory, AReferenceGoesStaleWhenTheViewChanges) {
   EXPECT_NE(referenceProblem(reference, otherScene).find("another scene"), std::string::npos);
 
   // Parameters: a longer AO ray changes the expected image, more AO rays per sample do not.
-  const std::vector<ParamSpec> aoParams = {
-      ParamSpec::integer("ao-rays", 4, 1, 64, "").keepingTheExpectedImage(),
-      ParamSpec::real("ao-distance", 0.25, 0.0, 10.0, "")};
+  const std::vector<OptionSpec> aoParams = {
+      OptionSpec::integer("ao-rays", 4, 1, 64, "").keepingTheExpectedImage(),
+      OptionSpec::real("ao-distance", 0.25, 0.0, 10.0, "")};
   LaneFrame ao = flatFrame(6, 1, 0.1, 1.0f);
   ao.params = ParamValues(aoParams);
   const ReferenceImage aoReference = flatReference(ao, 1.0f);
@@ -192,14 +192,14 @@ TEST_F(ErrorPlotFiles, LoadsAnExrAndRefusesWhatItCannotUse) {
   FilmImages images;
   images.color = Image(6, 4);
   for (Color& pixel : images.color.pixels) pixel = Color(0.25f);
-  writeImageFile(path("ref.exr"), images,
-                 {{"pathway:integrator", "stage5@ref"},
-                  {"pathway:spp", "4096"},
-                  {"pathway:filter", "tent"},
-                  {"pathway:filterRadius", "1.000000"},
-                  {"pathway:seed", "7"},
-                  {"pathway:sampler", "sobol"}},
-                 0.0f);
+  RenderMetadata made;
+  made.integrator = "stage5@ref";
+  made.spp = 4096;
+  made.filter = FilterType::Tent;
+  made.filterRadius = 1.0f;
+  made.seed = 7;
+  made.sampler = SamplerType::Sobol;
+  writeImageFile(path("ref.exr"), images, made, 0.0f);
   const ReferenceView view{"scene.gltf", CameraPose{}, FilterType::Box, 0.5f, {}};
   const ReferenceImage reference = loadReference(path("ref.exr"), view);
   EXPECT_EQ(reference.image.width, 6);
@@ -261,7 +261,7 @@ class ErrorPlotRender : public ::testing::Test {
     for (uint32_t spp : spps) {
       while (session.renderer().stats().samplesPerPixel < spp) session.renderer().renderPass();
       auto frame = std::make_shared<LaneFrame>();
-      RenderResult developed = session.develop({});
+      RenderResult developed = session.develop();
       frame->job = 1;
       frame->scenePath = scene_->scene.sourcePath;
       frame->camera = pose;

@@ -32,12 +32,14 @@ TEST(ImageFiles, ExrKeepsColourVarianceWeightLayersAndMetadata) {
                      pattern(width, height, 2000.0f)};
   for (Color& w : written.weight.pixels) w = Color(w.x);  // one weight channel
   const std::string path = (folder / "film.exr").string();
-  writeExr(path, written, {{"pathway:spp", "16"}});
+  RenderMetadata metadata;
+  metadata.spp = 16;
+  writeExr(path, written, metadata);
   const LoadedImage read = readImageFile(path);
   EXPECT_EQ(read.images.color.pixels, written.color.pixels);
   EXPECT_EQ(read.images.variance.pixels, written.variance.pixels);
   EXPECT_EQ(read.images.weight.pixels, written.weight.pixels);
-  EXPECT_EQ(read.metadata.at("pathway:spp"), "16");
+  EXPECT_EQ(read.metadata.spp, 16u);
 
   const Image reference = pattern(width, height, 3000.0f), error = pattern(width, height, 4000.0f);
   const std::string layered = (folder / "layers.exr").string();

@@ -51,7 +51,7 @@ class PartMerge : public ::testing::Test {
     const Camera camera(scene_, recipe.settings.width, recipe.settings.height);
     RenderSession session(tracer_, camera, recipe);
     session.renderer().renderAll();
-    const RenderResult result = session.develop({});
+    const RenderResult result = session.develop();
     const std::string path = (dir_ / ("part" + std::to_string(begin) + "-" + std::to_string(end) +
                                       "-" + std::to_string(seed) + ".exr"))
                                  .string();
@@ -74,12 +74,12 @@ TEST_F(PartMerge, PartsMergeIntoTheImageOfOneRender) {
   const Camera camera(scene_, recipe_.settings.width, recipe_.settings.height);
   RenderSession whole(tracer_, camera, recipe_);
   whole.renderer().renderAll();
-  const RenderResult expected = whole.develop({});
+  const RenderResult expected = whole.develop();
 
   const std::vector<std::string> parts = {writePart(10, 16), writePart(0, 3), writePart(3, 10)};
   const MergedRender merged = mergeParts(parts, false);
-  EXPECT_EQ(merged.begin, 0u);
-  EXPECT_EQ(merged.end, 16u);
+  EXPECT_EQ(merged.metadata.sampleBegin, 0u);
+  EXPECT_EQ(merged.metadata.sampleEnd, 16u);
 
   const Film& film = whole.renderer().film();
   double worstSum = 0.0, worstPixel = 0.0;
@@ -115,14 +115,15 @@ TEST_F(PartMerge, PartsMergeIntoTheImageOfOneRender) {
               worstSum, worstPixel);
 
   // The counters add up to the whole render's.
-  std::map<std::string, std::string> metadata(merged.metadata.begin(), merged.metadata.end());
+  const RenderMetadata& metadata = merged.metadata;
   const RayCounters& c = whole.renderer().stats().counters;
-  EXPECT_EQ(metadata.at("pathway:primaryRays"), std::to_string(c.primary));
-  EXPECT_EQ(metadata.at("pathway:secondaryRays"), std::to_string(c.secondary));
-  EXPECT_EQ(metadata.at("pathway:shadowRays"), std::to_string(c.shadow));
-  EXPECT_EQ(metadata.at("pathway:samples"), std::to_string(c.samples));
-  EXPECT_EQ(metadata.at("pathway:spp"), "16");
-  EXPECT_EQ(metadata.at(kSampleRangeKey), "0:16");
+  EXPECT_EQ(metadata.primaryRays, c.primary);
+  EXPECT_EQ(metadata.secondaryRays, c.secondary);
+  EXPECT_EQ(metadata.shadowRays, c.shadow);
+  EXPECT_EQ(metadata.samples, c.samples);
+  EXPECT_EQ(metadata.spp, 16u);
+  EXPECT_EQ(metadata.sampleBegin, 0u);
+  EXPECT_EQ(metadata.sampleEnd, 16u);
 
   // The order the parts are given in does not matter: they are added in the order of ranges.
   const MergedRender reordered = mergeParts({parts[1], parts[2], parts[0]}, false);

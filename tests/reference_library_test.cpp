@@ -162,7 +162,7 @@ TEST_F(ReferenceLibrary, RendersEveryStageBitForBitAsTheBuiltInReference) {
     EXPECT_EQ(library.images.color.pixels, builtIn.images.color.pixels) << integrator;
     EXPECT_EQ(library.images.variance.pixels, builtIn.images.variance.pixels) << integrator;
     EXPECT_EQ(library.images.weight.pixels, builtIn.images.weight.pixels) << integrator;
-    EXPECT_EQ(library.metadata.at("pathway:shadowRays"), builtIn.metadata.at("pathway:shadowRays"));
+    EXPECT_EQ(library.metadata.shadowRays, builtIn.metadata.shadowRays);
   }
 }
 

@@ -43,7 +43,7 @@ TEST(Registry, EveryStageRegistersUnderItsDeclaredNameSummaryAndParameters) {
       for (size_t i = 0; i < declared.params.size(); ++i)
         EXPECT_EQ(info->params[i].name, declared.params[i].name);
     }
-    for (const ParamSpec& spec : declared.params) {
+    for (const OptionSpec& spec : declared.params) {
       EXPECT_TRUE(spec.accepts(spec.defaultValue)) << declared.name << " " << spec.name;
       EXPECT_FALSE(spec.help.empty()) << declared.name << " " << spec.name;
     }
@@ -53,38 +53,38 @@ TEST(Registry, EveryStageRegistersUnderItsDeclaredNameSummaryAndParameters) {
 
 TEST(Registry, ParametersAreDeclaredByKind) {
   const StageDeclaration& pathTracing = stageDeclaration(5);
-  auto find = [&](const std::string& name) -> const ParamSpec& {
-    for (const ParamSpec& spec : pathTracing.params)
+  auto find = [&](const std::string& name) -> const OptionSpec& {
+    for (const OptionSpec& spec : pathTracing.params)
       if (spec.name == name) return spec;
     throw PathwayError("no " + name);
   };
-  EXPECT_EQ(find("max-depth").kind, ParamKind::Integer);
-  EXPECT_EQ(find("nee").kind, ParamKind::Switch);
-  EXPECT_EQ(find("light-pick").kind, ParamKind::Choice);  // a choice, not a 0/1 switch
+  EXPECT_EQ(find("max-depth").kind, OptionKind::Integer);
+  EXPECT_EQ(find("nee").kind, OptionKind::Toggle);
+  EXPECT_EQ(find("light-pick").kind, OptionKind::Choice);  // a choice, not a 0/1 switch
   EXPECT_EQ(find("light-pick").options, (std::vector<std::string>{"area", "power"}));
   EXPECT_EQ(find("light-pick").format(find("light-pick").defaultValue), "power");
-  EXPECT_EQ(stageDeclaration(2).params[1].kind, ParamKind::Real);
+  EXPECT_EQ(stageDeclaration(2).params[1].kind, OptionKind::Real);
 }
 
 TEST(Registry, ParameterValuesAreCheckedAgainstTheirDeclarations) {
-  const std::vector<ParamSpec> specs = {
-      ParamSpec::integer("rays", 4, 1, 16, "rays"),
-      ParamSpec::real("distance", 0.5, 0.0, 2.0, "distance"),
-      ParamSpec::toggle("shadows", true, "shadows"),
-      ParamSpec::choice("pick", "power", {"area", "power"}, "pick"),
+  const std::vector<OptionSpec> specs = {
+      OptionSpec::integer("rays", 4, 1, 16, "rays"),
+      OptionSpec::real("distance", 0.5, 0.0, 2.0, "distance"),
+      OptionSpec::toggle("shadows", true, "shadows"),
+      OptionSpec::choice("pick", "power", {"area", "power"}, "pick"),
   };
   const ParamValues defaults = resolveParams("x", specs, {});
-  EXPECT_EQ(defaults.integer("rays"), 4);
+  EXPECT_EQ(defaults.number("rays"), 4);
   EXPECT_EQ(defaults.number("distance"), 0.5);
-  EXPECT_TRUE(defaults.flag("shadows"));
-  EXPECT_EQ(defaults.choice("pick"), "power");
+  EXPECT_EQ(defaults.number("shadows"), 1.0);
+  EXPECT_EQ(defaults.number("pick"), 1.0);  // the option's index: power
   EXPECT_EQ(defaults.describe(), "rays=4 distance=0.5 shadows=on pick=power");
 
   const ParamValues given = resolveParams(
       "x", specs, {{"rays", "16"}, {"distance", "2"}, {"shadows", "off"}, {"pick", "area"}});
-  EXPECT_EQ(given.integer("rays"), 16);
-  EXPECT_FALSE(given.flag("shadows"));
-  EXPECT_EQ(given.choice("pick"), "area");
+  EXPECT_EQ(given.number("rays"), 16);
+  EXPECT_EQ(given.number("shadows"), 0.0);
+  EXPECT_EQ(given.number("pick"), 0.0);
   // What describe() writes reads back to the same values.
   std::map<std::string, std::string> text;
   for (const char* assignment : {"rays=16", "distance=2", "shadows=off", "pick=area"})
@@ -115,7 +115,7 @@ TEST(Registry, ParameterValuesAreCheckedAgainstTheirDeclarations) {
   EXPECT_NE(errorOf([&] { values.set("x", "rays", 17); }).find("[1, 16]"), std::string::npos);
   EXPECT_NE(errorOf([&] { values.set("x", "pick", 2); }).find("area or power"), std::string::npos);
   EXPECT_NE(errorOf([&] { values.set("x", "rays", 1.5); }), "");
-  EXPECT_EQ(values.integer("rays"), 4);  // unchanged by the refused values
+  EXPECT_EQ(values.number("rays"), 4);  // unchanged by the refused values
 }
 
 TEST(Registry, UnknownNamesListTheKnownOnes) {

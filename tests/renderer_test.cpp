@@ -49,7 +49,7 @@ TEST(Renderer, SameSeedGivesBitIdenticalImagesForOneAndManyThreads) {
     RenderSession session(tracer, camera, recipe);
     const std::atomic<bool> never{false};
     session.renderer().renderAll({}, &never);
-    return session.develop({});
+    return session.develop();
   };
   for (SamplerType sampler :
        {SamplerType::Independent, SamplerType::Stratified, SamplerType::Sobol}) {

@@ -205,13 +205,13 @@ TEST_F(ViewerWorker, RefusesParameterValuesOutsideTheirDeclarationInsteadOfClamp
 
 TEST(ViewerState, PanelValuesAreCheckedAndShareOneDeclaration) {
   ViewerState state;
-  EXPECT_EQ(state.settings.samplesPerPixel, setting::kViewerSamplesPerPixel.defaultValue);
+  EXPECT_EQ(state.settings.samplesPerPixel, kViewerSamplesPerPixel.defaultAs<uint32_t>());
   const IntegratorInfo& info = findIntegrator("stage5");
-  const ParamSpec* lightPick = nullptr;
-  for (const ParamSpec& spec : info.params)
+  const OptionSpec* lightPick = nullptr;
+  for (const OptionSpec& spec : info.params)
     if (spec.name == "light-pick") lightPick = &spec;
   ASSERT_NE(lightPick, nullptr);
-  EXPECT_EQ(lightPick->kind, ParamKind::Choice);  // the panel draws a combo box, not a checkbox
+  EXPECT_EQ(lightPick->kind, OptionKind::Choice);  // the panel draws a combo box, not a checkbox
   setParamValue(state, 0, info, *lightPick, 0.0);
   EXPECT_EQ(paramValue(state, 0, info, *lightPick), 0.0);
   EXPECT_THROW(setParamValue(state, 0, info, *lightPick, 2.0), PathwayError);

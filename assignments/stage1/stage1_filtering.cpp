@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "render/stage_api.h"
+#include "stages/stage1.h"  // the stage's parameters: setup.params.<field>
 
 namespace pathway {
 namespace {
@@ -64,7 +65,8 @@ void splat(FilmBlock& film, Vec2 p, const Color& radiance, const PixelFilter& fi
 // Stage 1 hands its filters and splat on to every later stage; its shading is the framework's
 // eye light.
 const bool registered = registerStage<EyeLightIntegrator>(
-    1, Stage1Functions{{boxFilter, tentFilter, mitchellNetravaliFilter, gaussianFilter}, splat});
+    stage1(),
+    Stage1Functions{{boxFilter, tentFilter, mitchellNetravaliFilter, gaussianFilter}, splat});
 
 }  // namespace
 }  // namespace pathway

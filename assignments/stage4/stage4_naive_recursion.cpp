@@ -11,15 +11,16 @@
 #include <cmath>
 
 #include "render/stage_api.h"
+#include "stages/stage4.h"  // the stage's parameters: setup.params.<field>
 
 namespace pathway {
 namespace {
 
 class NaiveRecursion : public Integrator {
  public:
-  explicit NaiveRecursion(const IntegratorSetup& setup)
-      : branching_(setup.params.integer("branching")),
-        depth_(setup.params.integer("depth")),
+  explicit NaiveRecursion(const StageSetup<Stage4Params>& setup)
+      : branching_(setup.params.branching),
+        depth_(setup.params.depth),
         stage2_(setup.kit.stage2()) {}
 
   Color Li(const Ray& cameraRay, SampleStream& samples,
@@ -53,7 +54,7 @@ class NaiveRecursion : public Integrator {
 };
 
 // The framework refuses settings over the ray budget (parameter max-rays) before this is built.
-const bool registered = registerStage<NaiveRecursion>(4);
+const bool registered = registerStage<NaiveRecursion>(stage4());
 
 }  // namespace
 }  // namespace pathway

@@ -30,7 +30,7 @@ struct ChartOptions {
   ChartSpec spec;
   std::vector<std::string> configs;
   std::string out = "chart";
-  int threads = setting::kThreads.defaultValue;
+  int threads = setting::kThreads.defaultAs<int>();
   bool fresh = false;
   bool draw = true;
   bool quiet = false;
@@ -110,11 +110,11 @@ Command addChartCommand(CLI::App& app) {
       ->add_option("-o,--out", options->out,
                    "Folder for the data and charts; its cache/ keeps references and renders")
       ->capture_default_str();
-  addSettingOption(*chart, setting::kChartWidth, options->spec.width);
-  addSettingOption(*chart, setting::kChartMaxSpp, options->spec.maxSpp);
-  addSettingOption(*chart, setting::kChartSeeds, options->spec.seeds);
-  addSettingOption(*chart, setting::kReferenceFactor, options->spec.referenceFactor);
-  addSettingOption(*chart, setting::kThreads, options->threads);
+  addOption(*chart, setting::kChartWidth, options->spec.width);
+  addOption(*chart, setting::kChartMaxSpp, options->spec.maxSpp);
+  addOption(*chart, setting::kChartSeeds, options->spec.seeds);
+  addOption(*chart, setting::kReferenceFactor, options->spec.referenceFactor);
+  addOption(*chart, setting::kThreads, options->threads);
   chart->add_flag("--no-reference{false}", options->spec.withReference,
                   "Measure time and rays only (no reference, no errors)");
   chart->add_flag("--fresh", options->fresh, "Render everything again, ignoring the cache");

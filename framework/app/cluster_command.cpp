@@ -32,8 +32,8 @@ struct SchedulerChoices {
 
 struct ClusterRenderOptions {
   SchedulerChoices job;
-  uint32_t spp = setting::kSamplesPerPixel.defaultValue;
-  float exposure = setting::kExposure.defaultValue;
+  uint32_t spp = setting::kSamplesPerPixel.defaultAs<uint32_t>();
+  float exposure = setting::kExposure.defaultAs<float>();
   std::vector<std::string> outputs;
   std::vector<std::string> renderArguments;  // the scene and render options, after --
 };
@@ -293,8 +293,8 @@ Command addClusterCommand(CLI::App& app) {
   CLI::App* renderCommand = cluster->add_subcommand(
       "render", "Render in --tasks sample ranges, then merge the parts into the image");
   addSchedulerOptions(*renderCommand, render->job);
-  addSettingOption(*renderCommand, setting::kSamplesPerPixel, render->spp);
-  addSettingOption(*renderCommand, setting::kExposure, render->exposure);
+  addOption(*renderCommand, setting::kSamplesPerPixel, render->spp);
+  addOption(*renderCommand, setting::kExposure, render->exposure);
   renderCommand->add_option("-o,--output", render->outputs, "The merged image(s): .exr or .png")
       ->required();
   renderCommand->footer("After --: the scene and the options of pathway render.");

@@ -19,6 +19,7 @@
 #include "core/error.h"
 #include "grade/class_grading.h"
 #include "grade/grade_calibration.h"
+#include "grade/reference_comparison.h"
 #include "grade/stage_grading.h"
 #include "render/integrator_registry.h"
 #include "render/reference_library.h"
@@ -121,28 +122,9 @@ int compareFiles(const GradeOptions& options) {
     if (reference.layers.count("tileVariance")) {
       judgeAgainstReference(result, image, readGradingReference(options.reference), settings);
     } else {
-      // A plain render as the reference: the per-pixel variances of both files, summed over a
-      // tile as if pixels were independent (true for the box filter).
-      const std::string mismatch = referenceMismatch(image.metadata, reference.metadata);
-      if (!mismatch.empty() && mismatch.rfind("spp:", 0) != 0)
-        throw PathwayError("the two files were made with other settings (" + mismatch + ")");
-      ComparisonInput input;
-      input.image = &image.images.color;
-      input.reference = &reference.images.color;
-      if (!image.images.variance.pixels.empty()) input.imageVariance = &image.images.variance;
-      if (!reference.images.variance.pixels.empty())
-        input.referenceVariance = &reference.images.variance;
-      if (!input.imageVariance && !input.referenceVariance)
-        throw PathwayError(options.image + " and " + options.reference +
-                           " carry no variance: render both with pathway render to .exr, or "
-                           "compare with a grading reference");
-      input.negativeValuesAllowed = negativeValuesAllowed(image.metadata);
-      const auto radius = image.metadata.find("pathway:filterRadius");
-      input.pixelCorrelation = filterPixelCorrelation(
-          radius != image.metadata.end() ? std::strtod(radius->second.c_str(), nullptr) : 0.5);
-      input.droppedSamples =
-          static_cast<uint64_t>(metadataNumber(image.metadata, "pathway:invalidSamples"));
-      result.comparison = compareImages(input, settings);
+      // A plain render as the reference: each file's own per-pixel variance.
+      result.comparison = compareWithReference(image.images, image.metadata,
+                                               {reference.images, reference.metadata}, settings);
       result.compared = true;
       result.passed = result.comparison.passed(settings);
       result.image = image.images.color;

@@ -17,7 +17,7 @@ struct MergeOptions {
   std::vector<std::string> parts;
   std::vector<std::string> outputs;
   bool allowIncomplete = false;
-  float exposure = setting::kExposure.defaultValue;
+  float exposure = setting::kExposure.defaultAs<float>();
   bool quiet = false;
 };
 
@@ -33,7 +33,8 @@ int run(const MergeOptions& options) {
   }
   if (!options.quiet) {
     std::printf("merged %zu parts: samples %u:%u of %u, %dx%d\n", options.parts.size(),
-                merged.begin, merged.end, merged.whole, merged.film.width(), merged.film.height());
+                merged.metadata.sampleBegin, merged.metadata.sampleEnd,
+                merged.metadata.samplesOfWhole, merged.film.width(), merged.film.height());
     for (const std::string& output : options.outputs) std::printf("wrote %s\n", output.c_str());
   }
   return 0;
@@ -57,7 +58,7 @@ Command addMergeCommand(CLI::App& app) {
   merge->add_flag("--allow-incomplete", options->allowIncomplete,
                   "Accept parts that cover only some of the render's samples (no gaps between "
                   "them)");
-  addSettingOption(*merge, setting::kExposure, options->exposure);
+  addOption(*merge, setting::kExposure, options->exposure);
   merge->add_flag("-q,--quiet", options->quiet, "No summary");
   return {merge, [options] { return run(*options); }};
 }

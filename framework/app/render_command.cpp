@@ -20,11 +20,12 @@ namespace {
 struct RenderOptions {
   RenderChoices choices;
   std::vector<std::string> outputs = {"render.png"};
-  int width = setting::kWidth.defaultValue;
+  // Their defaults and ranges: the declarations they are added from (run() sees them filled in).
+  int width = 0;
   int height = 0;  // not given: from the scene camera's aspect ratio, else square
-  uint32_t spp = setting::kSamplesPerPixel.defaultValue;
-  int threads = setting::kThreads.defaultValue;
-  float exposure = setting::kExposure.defaultValue;
+  uint32_t spp = 0;
+  int threads = 0;
+  float exposure = 0.0f;
   bool list = false;
   bool quiet = false;
   bool timings = false;
@@ -38,11 +39,11 @@ void listIntegrators() {
     std::printf("\n  %-12s stage %d, %s, sampler %s: %s\n", info->name.c_str(), info->stage,
                 variantName(info->variant), samplerTypeName(info->defaultSampler).c_str(),
                 info->summary.c_str());
-    for (const ParamSpec& spec : info->params)
+    for (const OptionSpec& spec : info->params)
       std::printf(
           "      %-16s %s (default %s, %s %s)\n", spec.name.c_str(), spec.help.c_str(),
           spec.format(spec.defaultValue).c_str(),
-          spec.kind == ParamKind::Integer || spec.kind == ParamKind::Real ? "range" : "choose",
+          spec.kind == OptionKind::Integer || spec.kind == OptionKind::Real ? "range" : "choose",
           spec.describeRange().c_str());
   }
 }
@@ -60,9 +61,7 @@ int run(const RenderOptions& options, const LaunchClock& clock) {
   if (!options.samples.empty() && !parseSampleRange(options.samples, s.sampleBegin, s.sampleEnd))
     throw PathwayError("--samples '" + options.samples +
                        "': expected A:B with A < B (sample indices)");
-  s.check();
-  // Sixteen passes keep the progress bar moving; more would only add per-pass overhead.
-  s.samplesPerPass = std::max(1u, s.samplesToRender() / 16);
+  s.samplesPerPass = samplesPerProgressPass(s.samplesToRender());
   for (const std::string& output : options.outputs) checkImagePath(output);
 
   const double startMs = clock.milliseconds();
@@ -84,7 +83,6 @@ int run(const RenderOptions& options, const LaunchClock& clock) {
   }
 
   ProgressBar progress(!options.quiet);
-  clearTodosHit();  // from here on, every TODO that runs belongs to this render
   const Camera camera(scene, s.width, s.height);
   RenderSession session(tracer, camera, recipe);
   session.renderer().renderAll([&](const RenderStats& stats) {
@@ -95,7 +93,7 @@ int run(const RenderOptions& options, const LaunchClock& clock) {
                     label.c_str());
   });
   progress.finish();
-  const RenderResult result = session.develop(todosHit());
+  const RenderResult result = session.develop();
 
   const double renderedMs = clock.milliseconds();
   for (const std::string& output : options.outputs) {
@@ -158,12 +156,11 @@ Command addRenderCommand(CLI::App& app) {
       ->add_option("-o,--output", options->outputs,
                    "Output file(s): .exr (linear, variance, metadata) or .png (sRGB)")
       ->capture_default_str();
-  addSettingOption(*render, setting::kSamplesPerPixel, options->spp);
-  addSettingOption(*render, setting::kWidth, options->width);
-  render->add_option("--height", options->height, setting::kHeight.help)
-      ->check(CLI::Range(setting::kHeight.minValue, setting::kHeight.maxValue));
-  addSettingOption(*render, setting::kThreads, options->threads);
-  addSettingOption(*render, setting::kExposure, options->exposure);
+  addOption(*render, setting::kSamplesPerPixel, options->spp);
+  addOption(*render, setting::kWidth, options->width);
+  addOptionWorkedOut(*render, setting::kHeight, options->height, "from the camera's aspect ratio");
+  addOption(*render, setting::kThreads, options->threads);
+  addOption(*render, setting::kExposure, options->exposure);
   render->add_option("--samples", options->samples,
                      "Render only sample indices A:B of the --spp (a part: .exr outputs carry the "
                      "film's sums, for pathway merge)");

@@ -19,10 +19,10 @@ void addSharedOptions(CLI::App& command, RenderChoices& choices) {
   command.add_option(
       "--sampler", choices.sampler,
       "independent, stratified or sobol (default: the integrator's; stage 3 uses sobol)");
-  addSettingOption(command, setting::kSeed, choices.seed);
+  addOption(command, setting::kSeed, choices.seed);
   command.add_option("--filter", choices.filter, "Pixel filter: box, tent, mitchell, gaussian")
       ->capture_default_str();
-  addSettingOption(command, setting::kFilterRadius, choices.filterRadius);
+  addOption(command, setting::kFilterRadius, choices.filterRadius);
   command.add_flag("--strict", choices.strictScene,
                    "Refuse a scene that requires KHR_lights_punctual (Blender's lamps) instead of "
                    "loading it without its lamps and a warning");

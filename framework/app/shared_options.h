@@ -1,6 +1,6 @@
-// The options `pathway render` and `pathway view` share, declared once so that their names,
-// help texts, defaults and ranges cannot drift apart. Settings come from their declarations in
-// render/render_settings.h and the integrators' parameters from the registry.
+// The options `pathway render` and `pathway view` share, and the helpers that make every
+// command's option from its declaration (render/render_settings.h, chart/chart_spec.h), so that
+// names, help texts, defaults and ranges cannot drift apart.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -14,16 +14,28 @@ namespace pathway {
 
 void addSharedOptions(CLI::App& command, RenderChoices& choices);
 
-// Adds --<name> for a declared setting: its help, its range and its default.
+// Adds --<name> for a declared option (render/parameters.h): its help, its range and its
+// default, which `value` takes.
 template <typename T>
-CLI::Option* addSettingOption(CLI::App& command, const SettingSpec<T>& spec, T& value) {
-  value = spec.defaultValue;
-  CLI::Option* option = command.add_option(std::string("--") + spec.name, value, spec.help);
-  // A range as wide as the type says nothing (the seed): leave it out of --help.
-  if (spec.minValue != std::numeric_limits<T>::lowest() ||
-      spec.maxValue != std::numeric_limits<T>::max())
-    option->check(CLI::Range(spec.minValue, spec.maxValue));
+CLI::Option* addOption(CLI::App& command, const OptionSpec& spec, T& value) {
+  value = spec.defaultAs<T>();
+  CLI::Option* option = command.add_option("--" + spec.name, value, spec.help);
+  // A range as wide as the type (the seed's) says nothing: left out of --help.
+  if (spec.minValue > static_cast<double>(std::numeric_limits<T>::lowest()) ||
+      spec.maxValue < static_cast<double>(std::numeric_limits<T>::max()))
+    option->check(CLI::Range(static_cast<T>(spec.minValue), static_cast<T>(spec.maxValue)));
   return option->capture_default_str();
+}
+
+// The same for an option whose value, when it is not given, is worked out later (`value` stays
+// 0): `render --height` from the camera's aspect ratio, `view --width` from the window.
+template <typename T>
+CLI::Option* addOptionWorkedOut(CLI::App& command, const OptionSpec& spec, T& value,
+                                const std::string& whenNotGiven) {
+  value = T{};
+  return command
+      .add_option("--" + spec.name, value, spec.help + " (default: " + whenNotGiven + ")")
+      ->check(CLI::Range(static_cast<T>(spec.minValue), static_cast<T>(spec.maxValue)));
 }
 
 }  // namespace pathway

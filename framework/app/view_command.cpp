@@ -36,20 +36,17 @@ Command addViewCommand(CLI::App& app) {
   view->add_option("--balance", options->balance,
                    "Split view: 'time' (equal render time) or 'rays' (equal ray count)")
       ->capture_default_str();
-  view->add_option("--width", options->width, "Render width in pixels (default: follow the window)")
-      ->check(CLI::Range(setting::kWidth.minValue, setting::kWidth.maxValue));
-  view->add_option("--height", options->height,
-                   "Render height in pixels (default: follow the window)")
-      ->check(CLI::Range(setting::kHeight.minValue, setting::kHeight.maxValue));
+  addOptionWorkedOut(*view, setting::kWidth, options->width, "follow the window");
+  addOptionWorkedOut(*view, setting::kHeight, options->height, "follow the window");
   view->add_option("--window-width", options->windowWidth, "Window width")
       ->check(CLI::Range(400, 16384))
       ->capture_default_str();
   view->add_option("--window-height", options->windowHeight, "Window height")
       ->check(CLI::Range(300, 16384))
       ->capture_default_str();
-  addSettingOption(*view, setting::kViewerSamplesPerPixel, options->spp);
-  addSettingOption(*view, setting::kSamplesPerPass, options->samplesPerPass);
-  addSettingOption(*view, setting::kExposure, options->exposure);
+  addOption(*view, kViewerSamplesPerPixel, options->spp);
+  addOption(*view, setting::kSamplesPerPass, options->samplesPerPass);
+  addOption(*view, setting::kExposure, options->exposure);
   view->add_option("--display", options->display, "color, variance or rays (rays per sample)")
       ->capture_default_str();
   view->add_flag("--show-help", options->showHelp, "Open with the keys-and-mouse help shown");
@@ -65,7 +62,7 @@ Command addViewCommand(CLI::App& app) {
   view->add_option("--reference", options->reference,
                    "An EXR of the scene's camera view at the render size (--width/--height): the "
                    "error plot measures relMSE against it");
-  addSettingOption(*view, setting::kReferenceSamplesPerPixel, options->referenceSpp);
+  addOption(*view, setting::kReferenceSamplesPerPixel, options->referenceSpp);
   view->add_flag("--make-reference", options->makeReference,
                  "Make the error plot's reference once the first image is in (key M)");
   view->add_flag("--benchmark", options->benchmark,

@@ -190,7 +190,7 @@ ChartData runChart(const ChartSpec& spec, const ChartRunOptions& options) {
     recipe.settings.width = scene.width;
     recipe.settings.height = scene.height;
     recipe.settings.samplesPerPixel = spp;
-    recipe.settings.samplesPerPass = std::max(1u, spp / 16);  // keeps the progress bar moving
+    recipe.settings.samplesPerPass = samplesPerProgressPass(spp);
     recipe.settings.seed = seed;
     recipe.settings.threads = options.threads;
     return recipe;

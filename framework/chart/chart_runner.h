@@ -48,10 +48,6 @@ struct ChartRunOptions {
   std::function<void(double, const std::string&)> progress;
 };
 
-// The seed of every reference render: distinct from the charted seeds (1, 2, ...), so that no
-// render shares its random numbers with the reference it is compared with.
-inline constexpr uint64_t kReferenceSeed = 0x7265666572656e63ull;
-
 // Checks the spec, then renders what is not cached. Throws PathwayError for bad input (unknown
 // integrator, unreadable scene, a folder it cannot write).
 ChartData runChart(const ChartSpec& spec, const ChartRunOptions& options);

@@ -93,7 +93,7 @@ ChartConfig parseChartConfig(const std::string& text) {
           !isPowerOfTwo(static_cast<uint32_t>(spp)) || spp != double(uint32_t(spp)))
         throw PathwayError("chart configuration \"" + text + "\": max-spp=" + value +
                            " must be a power of two from 1 to " +
-                           std::to_string(setting::kChartMaxSpp.maxValue));
+                           setting::kChartMaxSpp.format(setting::kChartMaxSpp.maxValue));
       config.maxSpp = static_cast<uint32_t>(spp);
     } else if (key == "reference")
       config.referenceFrom = value;

@@ -14,16 +14,17 @@
 namespace pathway {
 
 namespace setting {
-inline constexpr SettingSpec<int> kChartWidth{"width", 128, 8, 4096,
-                                              "Image width in pixels (height: from the camera)"};
-inline constexpr SettingSpec<uint32_t> kChartMaxSpp{
-    "max-spp", 256, 1, 1u << 16, "Largest spp charted, a power of two: spp = 1, 2, 4 ... max-spp"};
-inline constexpr SettingSpec<int> kChartSeeds{"seeds", 4, 1, 64,
-                                              "Renders per point, each with its own seed"};
+// Charts render many small images: the render setting's width, smaller by default.
+inline const OptionSpec kChartWidth =
+    kWidth.withDefault(128, "Image width in pixels (height: from the camera)");
+inline const OptionSpec kChartMaxSpp = OptionSpec::integer(
+    "max-spp", 256, 1, 1 << 16, "Largest spp charted, a power of two: spp = 1, 2, 4 ... max-spp");
+inline const OptionSpec kChartSeeds =
+    OptionSpec::integer("seeds", 4, 1, 64, "Renders per point, each with its own seed");
 // The reference's own error must be negligible next to the charted errors: at 64x the largest
 // spp it adds about 1/64 to the relMSE of the best point (the two are independent).
-inline constexpr SettingSpec<uint32_t> kReferenceFactor{
-    "reference-factor", 64, 64, 4096, "Reference spp as a multiple of the largest charted spp"};
+inline const OptionSpec kReferenceFactor = OptionSpec::integer(
+    "reference-factor", 64, 64, 4096, "Reference spp as a multiple of the largest charted spp");
 }  // namespace setting
 
 // One line on a chart.
@@ -49,10 +50,10 @@ ChartConfig parseChartConfig(const std::string& text);
 struct ChartSpec {
   std::string title;  // over the chart
   std::string scene;  // for configurations without scene=
-  int width = setting::kChartWidth.defaultValue;
-  uint32_t maxSpp = setting::kChartMaxSpp.defaultValue;
-  int seeds = setting::kChartSeeds.defaultValue;
-  uint32_t referenceFactor = setting::kReferenceFactor.defaultValue;
+  int width = setting::kChartWidth.defaultAs<int>();
+  uint32_t maxSpp = setting::kChartMaxSpp.defaultAs<uint32_t>();
+  int seeds = setting::kChartSeeds.defaultAs<int>();
+  uint32_t referenceFactor = setting::kReferenceFactor.defaultAs<uint32_t>();
   bool withReference = true;  // false: time and rays only, no errors (ray-count charts)
   std::vector<ChartConfig> configs;
 

@@ -17,8 +17,8 @@ namespace pathway {
 struct MergedRender {
   Film film{0, 0};
   FilmImages images;
-  ImageMetadata metadata;  // the parts' settings, summed counters, the union range
-  uint32_t begin = 0, end = 0, whole = 0;
+  // The parts' settings, their counters summed, their sample ranges' union.
+  RenderMetadata metadata;
   size_t unresolvedPixels = 0;
 };
 

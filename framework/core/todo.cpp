@@ -3,15 +3,14 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
-#include <mutex>
 
 namespace pathway {
 namespace {
 
-std::mutex todoMutex;
-std::vector<const TodoSite*> sitesPrinted;  // guarded by todoMutex
-std::vector<const TodoSite*> sitesHit;      // guarded by todoMutex
-std::atomic<unsigned> generation{1};
+std::mutex printMutex;
+std::vector<const TodoSite*> sitesPrinted;  // guarded by printMutex
+std::atomic<uint64_t> nextLogId{1};
+thread_local TodoLog* currentLog = nullptr;
 
 std::string relativeToProject(const char* file) {
 #ifdef PATHWAY_SOURCE_DIR
@@ -23,33 +22,42 @@ std::string relativeToProject(const char* file) {
 
 }  // namespace
 
-unsigned todoGeneration() {
-  return generation.load(std::memory_order_relaxed);
+TodoLog::TodoLog() : id_(nextLogId.fetch_add(1)) {}
+
+void TodoLog::record(const TodoSite& site) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (std::find(sites_.begin(), sites_.end(), &site) == sites_.end()) sites_.push_back(&site);
 }
 
-void reportTodo(TodoSite& site) {
-  std::lock_guard<std::mutex> lock(todoMutex);
-  site.generationSeen.store(generation.load());
-  if (std::find(sitesHit.begin(), sitesHit.end(), &site) == sitesHit.end())
-    sitesHit.push_back(&site);
-  if (std::find(sitesPrinted.begin(), sitesPrinted.end(), &site) != sitesPrinted.end()) return;
-  sitesPrinted.push_back(&site);
-  std::fprintf(stderr, "TODO not done yet: %s:%d: %s (a placeholder runs meanwhile)\n",
-               relativeToProject(site.file).c_str(), site.line, site.task);
-}
-
-std::vector<TodoRecord> todosHit() {
-  std::lock_guard<std::mutex> lock(todoMutex);
+std::vector<TodoRecord> TodoLog::records() const {
+  std::lock_guard<std::mutex> lock(mutex_);
   std::vector<TodoRecord> result;
-  for (const TodoSite* site : sitesHit)
+  for (const TodoSite* site : sites_)
     result.push_back({relativeToProject(site->file), site->line, site->task});
   return result;
 }
 
-void clearTodosHit() {
-  std::lock_guard<std::mutex> lock(todoMutex);
-  sitesHit.clear();
-  generation.fetch_add(1);
+CurrentTodoLog::CurrentTodoLog(TodoLog* log) : previous_(currentLog) {
+  currentLog = log;
+}
+
+CurrentTodoLog::~CurrentTodoLog() {
+  currentLog = previous_;
+}
+
+uint64_t currentTodoLogId() {
+  return currentLog ? currentLog->id() : 0;
+}
+
+void reportTodo(TodoSite& site) {
+  TodoLog* log = currentLog;
+  if (log) log->record(site);
+  site.logSeen.store(log ? log->id() : 0, std::memory_order_relaxed);
+  std::lock_guard<std::mutex> lock(printMutex);
+  if (std::find(sitesPrinted.begin(), sitesPrinted.end(), &site) != sitesPrinted.end()) return;
+  sitesPrinted.push_back(&site);
+  std::fprintf(stderr, "TODO not done yet: %s:%d: %s (a placeholder runs meanwhile)\n",
+               relativeToProject(site.file).c_str(), site.line, site.task);
 }
 
 }  // namespace pathway

@@ -1,10 +1,12 @@
 // PATHWAY_TODO("what to write") marks an unfinished piece of a stage. The first time it runs it
-// prints, once, the file and line to open; it never stops the program, so a skeleton still renders
-// its placeholder. The list of TODOs that ran tells the CLI and the grader that a stage is
-// unfinished.
+// prints, once per process, the file and line to open; it never stops the program, so a skeleton
+// still renders its placeholder. Each render keeps its own log of the TODOs that ran (TodoLog),
+// which tells the CLI, the viewer and the grader that a stage is unfinished.
 #pragma once
 
 #include <atomic>
+#include <cstdint>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -14,7 +16,8 @@ struct TodoSite {
   const char* file;
   int line;
   const char* task;
-  std::atomic<unsigned> generationSeen{0};  // lets the hot path skip the lock after the first hit
+  // The log this site last went into: lets the hot path skip the locks after the first hit.
+  std::atomic<uint64_t> logSeen{UINT64_MAX};
 };
 
 struct TodoRecord {
@@ -23,22 +26,48 @@ struct TodoRecord {
   std::string task;
 };
 
-unsigned todoGeneration();
-// Records that a TODO ran; prints it the first time a given site runs in this process.
+// The TODOs one render ran, in the order first seen. A Renderer owns one and makes it the
+// current log of each thread while that thread renders one of its tiles, so renders that run
+// side by side (the viewer's panes and its reference) keep apart what each of them ran.
+class TodoLog {
+ public:
+  TodoLog();
+  TodoLog(const TodoLog&) = delete;
+  TodoLog& operator=(const TodoLog&) = delete;
+
+  uint64_t id() const { return id_; }
+  void record(const TodoSite& site);
+  std::vector<TodoRecord> records() const;
+
+ private:
+  const uint64_t id_;
+  mutable std::mutex mutex_;
+  std::vector<const TodoSite*> sites_;
+};
+
+// While it lives, the TODOs that run on this thread go into `log` (nullptr: into none).
+class CurrentTodoLog {
+ public:
+  explicit CurrentTodoLog(TodoLog* log);
+  ~CurrentTodoLog();
+  CurrentTodoLog(const CurrentTodoLog&) = delete;
+  CurrentTodoLog& operator=(const CurrentTodoLog&) = delete;
+
+ private:
+  TodoLog* previous_;
+};
+
+// The id of this thread's current log; 0 when there is none.
+uint64_t currentTodoLogId();
+// Records that a TODO ran in the current log; prints it the first time a site runs in this
+// process.
 void reportTodo(TodoSite& site);
-
-// Every distinct TODO that has run since the last clearTodosHit(), in the order first seen.
-std::vector<TodoRecord> todosHit();
-
-// Forgets the TODOs hit so far (tests and the grader use it to check one stage at a time).
-void clearTodosHit();
 
 }  // namespace pathway
 
-#define PATHWAY_TODO(task)                                                \
-  do {                                                                    \
-    static ::pathway::TodoSite pathwayTodoSite{__FILE__, __LINE__, task}; \
-    if (pathwayTodoSite.generationSeen.load(std::memory_order_relaxed) != \
-        ::pathway::todoGeneration())                                      \
-      ::pathway::reportTodo(pathwayTodoSite);                             \
+#define PATHWAY_TODO(task)                                                                        \
+  do {                                                                                            \
+    static ::pathway::TodoSite pathwayTodoSite{__FILE__, __LINE__, task};                         \
+    if (pathwayTodoSite.logSeen.load(std::memory_order_relaxed) != ::pathway::currentTodoLogId()) \
+      ::pathway::reportTodo(pathwayTodoSite);                                                     \
   } while (false)

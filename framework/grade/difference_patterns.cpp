@@ -3,6 +3,10 @@
 #include "grade/difference_diagnosis.h"
 #include "grade/image_comparison.h"
 #include "scene/camera.h"
+#include "stages/stage2.h"
+#include "stages/stage3.h"
+#include "stages/stage4.h"
+#include "stages/stage5.h"
 
 namespace pathway {
 namespace {
@@ -101,8 +105,10 @@ std::map<std::string, Image> makeDifferencePatterns(const GradingCase& gradingCa
     const Image unoccluded = renderVariant(gradingCase, tracer, {{"ao-distance", "1e-6"}}, seed);
     patterns[pattern::kOccluded] = difference(unoccluded, referenceMean);
     // The same AO with longer rays: how the image changes when the AO distance is misread.
-    const double d =
-        gradingCase.recipe(Variant::Reference, EarlierStages::Own, seed).params.real("ao-distance");
+    const ParamValues values =
+        gradingCase.recipe(Variant::Reference, EarlierStages::Own, seed).params;
+    const double d = gradingCase.stage == 2 ? stage2().read(values).aoDistance
+                                            : stage3().read(values).aoDistance;
     if (d < 1e5) {
       patterns[pattern::kLongerRays] = difference(
           renderVariant(gradingCase, tracer, {{"ao-distance", std::to_string(2.0 * d)}}, seed + 1),
@@ -120,7 +126,9 @@ std::map<std::string, Image> makeDifferencePatterns(const GradingCase& gradingCa
     patterns[pattern::kDirect] = difference(m1, m0);
     const ParamValues params =
         gradingCase.recipe(Variant::Reference, EarlierStages::Own, seed).params;
-    if (params.integer(depth) != 1) patterns[pattern::kIndirect] = difference(referenceMean, m1);
+    const int depthValue =
+        gradingCase.stage == 4 ? stage4().read(params).depth : stage5().read(params).maxDepth;
+    if (depthValue != 1) patterns[pattern::kIndirect] = difference(referenceMean, m1);
     // Each emitter's direct light on its own (the others dark), where there are several: a pdf
     // that does not match the picking rule is off by a factor of each emitter's own.
     std::vector<size_t> emissive;

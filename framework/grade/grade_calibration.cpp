@@ -5,6 +5,7 @@
 #include <map>
 
 #include "grade/grading_reference.h"
+#include "grade/reference_comparison.h"
 #include "grade/stage_grading.h"
 #include "scene/gltf_loader.h"
 
@@ -31,9 +32,7 @@ CalibrationResult calibrate(const GradingCase& gradingCase, uint32_t spp, Varian
   auto passes = [&](uint64_t seed, Comparison* comparison) {
     const RenderRecipe recipe = atSpp.recipe(variant, EarlierStages::Reference, seed);
     const RenderResult render = runRender(tracer, recipe);
-    const std::map<std::string, std::string> metadata(render.metadata.begin(),
-                                                      render.metadata.end());
-    *comparison = compareWithReference(render.images, metadata, reference, settings);
+    *comparison = compareWithReference(render.images, render.metadata, reference, settings);
     return comparison->passed(settings);
   };
   for (int i = 0; i < seeds; ++i) {

@@ -17,9 +17,9 @@ namespace pathway {
 // Independent renders that make up a reference: their mean is the reference image (at
 // kReferenceReplicates times the student's spp), their spread the variance of one student render.
 constexpr int kReferenceReplicates = 64;
-// Seeds: a submission renders with kStudentSeed, reference replicate i with kReferenceSeed + i.
+// Seeds: a submission renders with kStudentSeed, reference replicate i with kReferenceSeed + i
+// (render/render_settings.h).
 constexpr uint64_t kStudentSeed = 1;
-constexpr uint64_t kReferenceSeed = 1000000;
 
 struct GradingCase {
   int stage = 1;

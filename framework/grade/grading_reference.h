@@ -11,6 +11,7 @@
 
 #include "grade/grading_cases.h"
 #include "grade/image_comparison.h"
+#include "io/render_metadata.h"
 #include "scene/ray_tracer.h"
 
 namespace pathway {
@@ -18,14 +19,12 @@ namespace pathway {
 struct GradingReference {
   Image mean;
   Image tileVariance;
-  Image blockVariance;               // the same over the omnibus tests' blocks
-  glm::dvec3 blockCorrelation{1.0};  // see ComparisonInput::blockCorrelation
-  int replicates = 0;
-  int tileSize = 0;
-  int blockSize = 0;
-  double secondsPerRender = 0.0;  // of one replicate, the submission's workload
-  double raysPerSecond = 0.0;
-  std::map<std::string, std::string> metadata;  // "pathway:*"
+  Image blockVariance;  // the same over the omnibus tests' blocks
+  // The settings the replicates were made with (no seed, path or timing of their own) ...
+  RenderMetadata metadata;
+  // ... and how the statistics were made: replicates, tile and block size, the blocks'
+  // correlation (see ComparisonInput::blockCorrelation), one replicate's time.
+  GradingRecord record;
   // Masks for diagnosing a wrong image (difference_patterns.h), by layer name; references made
   // before them have none.
   std::map<std::string, Image> patterns;
@@ -40,22 +39,5 @@ void writeGradingReference(const std::string& path, const GradingReference& refe
 // Throws PathwayError naming the file: missing, unreadable or truncated, or not a grading
 // reference (no tileVariance layer or replicate count).
 GradingReference readGradingReference(const std::string& path);
-
-// The settings keys a render and its reference must agree on, and the first disagreement
-// ("spp: 16 here, 32 in the reference"), or "" when they agree.
-std::string referenceMismatch(const std::map<std::string, std::string>& render,
-                              const std::map<std::string, std::string>& reference);
-
-// A number from "pathway:*" metadata; 0 when the key is missing or not a number.
-double metadataNumber(const std::map<std::string, std::string>& metadata, const std::string& key);
-// Whether the render's filter (its "pathway:filter") can make negative pixels.
-bool negativeValuesAllowed(const std::map<std::string, std::string>& metadata);
-
-// Compares one render of a case (its images and "pathway:*" metadata) with the case's reference.
-// Throws PathwayError when they were made with other settings.
-Comparison compareWithReference(const FilmImages& render,
-                                const std::map<std::string, std::string>& renderMetadata,
-                                const GradingReference& reference,
-                                const ComparisonSettings& settings);
 
 }  // namespace pathway

@@ -16,6 +16,7 @@
 #include "core/child_process.h"
 #include "core/error.h"
 #include "core/temporary_folder.h"
+#include "grade/reference_comparison.h"
 #include "render/pixel_in_progress.h"
 #include "render/stage_library.h"
 #include "scene/gltf_loader.h"
@@ -24,21 +25,6 @@ namespace pathway {
 namespace {
 
 namespace fs = std::filesystem;
-
-// "file:line; file:line" (render metadata) -> the sites.
-std::vector<std::string> todoSites(const std::map<std::string, std::string>& metadata) {
-  std::vector<std::string> sites;
-  const auto it = metadata.find("pathway:todoSites");
-  if (it == metadata.end()) return sites;
-  const std::string& text = it->second;
-  for (size_t start = 0; start < text.size();) {
-    size_t end = text.find("; ", start);
-    if (end == std::string::npos) end = text.size();
-    sites.push_back(text.substr(start, end - start));
-    start = end + 2;
-  }
-  return sites;
-}
 
 // How a case's render went: its image, or why there is none.
 struct RenderOutcome {
@@ -129,8 +115,8 @@ std::vector<RenderOutcome> renderInChildren(const std::vector<const GradingCase*
 // Long enough for a correct stage on a slow machine, short enough that a stage stuck in a loop
 // cannot run a whole class (or Gradescope's time limit) out.
 double caseLimit(const GradingRun& run, const GradingReference& reference) {
-  return std::min(run.timeLimit,
-                  std::max(kMinimumCaseSeconds, kCaseTimeFactor * reference.secondsPerRender));
+  return std::min(run.timeLimit, std::max(kMinimumCaseSeconds,
+                                          kCaseTimeFactor * reference.record.secondsPerRender));
 }
 
 CaseResult caseHeader(const GradingCase& gradingCase) {
@@ -236,11 +222,13 @@ void renderGradingCases(const std::vector<const GradingCase*>& cases,
 
 void judgeAgainstReference(CaseResult& result, const LoadedImage& render,
                            const GradingReference& reference, const ComparisonSettings& settings) {
-  result.todos = todoSites(render.metadata);
-  result.seconds = metadataNumber(render.metadata, "pathway:seconds");
-  result.raysPerSecond = metadataNumber(render.metadata, "pathway:raysPerSecond");
-  result.referenceSeconds = reference.secondsPerRender;
-  result.referenceRaysPerSecond = reference.raysPerSecond;
+  result.todos = render.metadata.todoSites;
+  if (const auto& timing = render.metadata.timing) {
+    result.seconds = timing->seconds;
+    result.raysPerSecond = timing->raysPerSecond;
+  }
+  result.referenceSeconds = reference.record.secondsPerRender;
+  result.referenceRaysPerSecond = reference.record.raysPerSecond;
   result.comparison = compareWithReference(render.images, render.metadata, reference, settings);
   result.compared = true;
   result.passed = result.comparison.passed(settings);
@@ -253,8 +241,8 @@ void judgeAgainstReference(CaseResult& result, const LoadedImage& render,
     input.reference = &reference.mean;
     input.tileVariance = &reference.tileVariance;
     if (!render.images.variance.pixels.empty()) input.imageVariance = &render.images.variance;
-    input.replicates = reference.replicates;
-    input.tileSize = reference.tileSize;
+    input.replicates = reference.record.replicates;
+    input.tileSize = reference.record.tileSize;
     input.stage = result.stage;
     for (const auto& [name, image] : reference.patterns) input.patterns[name] = &image;
     result.diagnosis = diagnoseDifference(input, result.comparison, settings);

@@ -63,10 +63,10 @@ float linearToSrgb(float linear) {
   return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
 }
 
-void writeExr(const std::string& path, const FilmImages& images, const ImageMetadata& metadata) {
+void writeExr(const std::string& path, const FilmImages& images, const RenderMetadata& metadata) {
   const Image& color = images.color;
   const bool extras = images.variance.width == color.width && images.weight.width == color.width;
-  RasterHeader header{color.width, color.height, {"R", "G", "B"}, metadata};
+  RasterHeader header{color.width, color.height, {"R", "G", "B"}, metadataAttributes(metadata)};
   if (extras) {
     for (const char* name : {"variance.R", "variance.G", "variance.B", "weight"})
       header.channels.push_back(name);
@@ -83,9 +83,9 @@ void writeExr(const std::string& path, const FilmImages& images, const ImageMeta
 }
 
 void writeExrLayers(const std::string& path, const std::map<std::string, const Image*>& layers,
-                    const ImageMetadata& metadata) {
+                    const RenderMetadata& metadata) {
   const Image& first = *layers.begin()->second;
-  RasterHeader header{first.width, first.height, {}, metadata};
+  RasterHeader header{first.width, first.height, {}, metadataAttributes(metadata)};
   header.compressed = true;  // the 17 grading references take 1.2 MB so, 4.9 MB uncompressed
   for (const auto& [name, image] : layers) {
     if (image->width != first.width || image->height != first.height)
@@ -113,7 +113,7 @@ void writePng(const std::string& path, const Image& image, float exposure) {
 }
 
 void writeImageFile(const std::string& path, const FilmImages& images,
-                    const ImageMetadata& metadata, float exposure) {
+                    const RenderMetadata& metadata, float exposure) {
   checkImagePath(path);
   if (lowerExtension(path) == ".exr") return writeExr(path, images, metadata);
   writePng(path, images.color, exposure);
@@ -157,8 +157,7 @@ LoadedImage readImageFile(const std::string& path) {
     if (layer == "variance" || channel(layer + ".G") < 0 || channel(layer + ".B") < 0) continue;
     extract(loaded.layers[layer], {c, channel(layer + ".G"), channel(layer + ".B")});
   }
-  for (const auto& [name, value] : spec.attributes)
-    if (name.rfind("pathway:", 0) == 0) loaded.metadata[name] = value;
+  loaded.metadata = readMetadataAttributes(spec.attributes, path);
   return loaded;
 }
 

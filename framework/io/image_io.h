@@ -12,10 +12,9 @@
 #include <vector>
 
 #include "film/film.h"
+#include "io/render_metadata.h"
 
 namespace pathway {
-
-using ImageMetadata = std::vector<std::pair<std::string, std::string>>;  // "pathway:<key>", value
 
 struct FilmImages {
   Image color;
@@ -24,16 +23,16 @@ struct FilmImages {
 };
 
 // Uncompressed (a render's noisy floats barely compress; raster.h).
-void writeExr(const std::string& path, const FilmImages& images, const ImageMetadata& metadata);
+void writeExr(const std::string& path, const FilmImages& images, const RenderMetadata& metadata);
 // An EXR of RGB layers of one size: the layer named "" is R, G, B; a layer "x" is x.R, x.G, x.B.
 // ZIP-compressed: the grading references are written this way, and converged images compress.
 void writeExrLayers(const std::string& path, const std::map<std::string, const Image*>& layers,
-                    const ImageMetadata& metadata);
+                    const RenderMetadata& metadata);
 // `exposure` in stops: pixel values are scaled by 2^exposure before the sRGB curve.
 void writePng(const std::string& path, const Image& image, float exposure);
 // Picks the format from the extension (.exr or .png); throws PathwayError for anything else.
 void writeImageFile(const std::string& path, const FilmImages& images,
-                    const ImageMetadata& metadata, float exposure);
+                    const RenderMetadata& metadata, float exposure);
 
 // Runs `write` on a temporary name beside `path`, then renames the file into place; on failure the
 // temporary is removed and the PathwayError names `path`.
@@ -47,8 +46,9 @@ void checkImagePath(const std::string& path);
 struct LoadedImage {
   FilmImages images;  // variance and weight are empty when the file has no such channels
   std::map<std::string, Image> layers;  // every other x.R, x.G, x.B triple, by x
-  std::map<std::string, std::string> metadata;
+  RenderMetadata metadata;
 };
+// Throws PathwayError naming the file when it cannot be read or its metadata is malformed.
 LoadedImage readImageFile(const std::string& path);
 
 // The sRGB transfer curve (linear -> encoded), for values in [0, 1].

@@ -65,18 +65,8 @@ void insertSlices(Imf::FrameBuffer& frame, const std::vector<std::string>& names
 
 }  // namespace
 
-bool parseSampleRange(const std::string& text, uint32_t& begin, uint32_t& end) {
-  unsigned long long a = 0, b = 0;
-  char extra = 0;
-  if (std::sscanf(text.c_str(), "%llu:%llu%c", &a, &b, &extra) != 2 || a >= b || b > 0xffffffffu)
-    return false;
-  begin = static_cast<uint32_t>(a);
-  end = static_cast<uint32_t>(b);
-  return true;
-}
-
 void writePartialFilm(const std::string& path, const Film& film, const FilmImages& images,
-                      const ImageMetadata& metadata) {
+                      const RenderMetadata& metadata) {
   checkImagePath(path);
   if (lowerExtension(path) != ".exr")
     throw PathwayError(path + ": a part of a render is written as .exr only");
@@ -113,7 +103,8 @@ void writePartialFilm(const std::string& path, const Film& film, const FilmImage
       const std::vector<std::string> wordNames = wordChannels();
       for (const std::string& name : imageNames) exr.channels().insert(name, Imf::FLOAT);
       for (const std::string& name : wordNames) exr.channels().insert(name, Imf::UINT);
-      for (const auto& [key, value] : metadata) exr.insert(key, Imf::StringAttribute(value));
+      for (const auto& [key, value] : metadataAttributes(metadata))
+        exr.insert(key, Imf::StringAttribute(value));
       Imf::FrameBuffer frame;
       insertSlices(frame, imageNames, Imf::FLOAT, reinterpret_cast<char*>(image.data()),
                    sizeof(float), width);
@@ -133,9 +124,11 @@ PartialFilm readPartialFilm(const std::string& path, bool withSums) {
   try {
     Imf::InputFile file(path.c_str());
     const Imf::Header& exr = file.header();
+    std::vector<std::pair<std::string, std::string>> attributes;
     for (auto attribute = exr.begin(); attribute != exr.end(); ++attribute)
       if (const auto* text = dynamic_cast<const Imf::StringAttribute*>(&attribute.attribute()))
-        part.metadata[attribute.name()] = text->value();
+        attributes.emplace_back(attribute.name(), text->value());
+    part.metadata = readMetadataAttributes(attributes, path);
     const std::vector<std::string> wordNames = wordChannels();
     for (const std::string& name : wordNames) {
       const Imf::Channel* channel = exr.channels().findChannel(name);
@@ -144,15 +137,8 @@ PartialFilm readPartialFilm(const std::string& path, bool withSums) {
                            ": not a part of a render (no film sums: render it with --samples A:B "
                            "to an .exr)");
     }
-    const auto range = part.metadata.find(kSampleRangeKey);
-    const auto whole = part.metadata.find(kSampleRangeOfKey);
-    if (range == part.metadata.end() || whole == part.metadata.end() ||
-        !parseSampleRange(range->second, part.begin, part.end))
-      throw PathwayError(path + ": its sample range is missing or malformed");
-    part.whole = static_cast<uint32_t>(std::strtoul(whole->second.c_str(), nullptr, 10));
-    if (part.end > part.whole)
-      throw PathwayError(path + ": its sample range " + range->second + " exceeds the render's " +
-                         whole->second + " samples");
+    if (part.metadata.samplesOfWhole == 0)
+      throw PathwayError(path + ": its sample range is missing");
 
     const Imath::Box2i window = exr.dataWindow();
     const int width = part.width = window.max.x - window.min.x + 1;

@@ -5,35 +5,27 @@
 #pragma once
 
 #include <cstdint>
-#include <map>
 #include <string>
 
 #include "film/film.h"
 #include "io/image_io.h"
+#include "io/render_metadata.h"
 
 namespace pathway {
 
 struct PartialFilm {
   Film film{0, 0};
   int width = 0, height = 0;
-  std::map<std::string, std::string> metadata;
-  // The part holds sample indices [begin, end) of a render of `whole` samples per pixel.
-  uint32_t begin = 0, end = 0, whole = 0;
+  // Its sample range: indices [sampleBegin, sampleEnd) of a render of samplesOfWhole spp.
+  RenderMetadata metadata;
 };
 
 // Written through a temporary file, like every image. Throws PathwayError naming `path`.
 void writePartialFilm(const std::string& path, const Film& film, const FilmImages& images,
-                      const ImageMetadata& metadata);
+                      const RenderMetadata& metadata);
 // Throws PathwayError naming `path` when it cannot be read (missing, truncated) or is not a part
 // (no film sums or no sample range in its metadata). With `withSums` false only the header is
 // read (metadata, range and size; the film stays empty), which is quick.
 PartialFilm readPartialFilm(const std::string& path, bool withSums = true);
-
-// "A:B" with A < B < 2^32 into begin and end; false otherwise.
-bool parseSampleRange(const std::string& text, uint32_t& begin, uint32_t& end);
-
-// The metadata keys of a part's sample range: "A:B" and the whole render's N.
-inline constexpr const char* kSampleRangeKey = "pathway:sampleRange";
-inline constexpr const char* kSampleRangeOfKey = "pathway:sampleRangeOf";
 
 }  // namespace pathway

@@ -3,7 +3,6 @@
 // the stage's own work.
 #pragma once
 
-#include <string>
 #include <vector>
 
 #include "sampling/discrete_distribution.h"
@@ -20,6 +19,9 @@ struct LightSample {
   float pdfArea = 0.0f;  // density of this point per unit area, over all emitters
 };
 
+// How the picker weights the emitters (stage 5's light-pick parameter lists them in this order).
+enum class EmitterWeighting { Area, Power };
+
 class EmitterPicker {
  public:
   struct Pick {
@@ -27,8 +29,7 @@ class EmitterPicker {
     float probability;  // of picking this triangle
   };
 
-  // `weighting`: "area" or "power" (stage 5's light-pick parameter).
-  EmitterPicker(const Scene& scene, const std::string& weighting);
+  EmitterPicker(const Scene& scene, EmitterWeighting weighting);
 
   bool empty() const { return distribution_.empty(); }  // no emitter can emit power
   // The triangle whose share of the total weight holds u in [0, 1). Not to be called when empty.

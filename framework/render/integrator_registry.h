@@ -29,7 +29,7 @@ struct IntegratorInfo {
   int stage = 0;     // 1..5, the course stage it belongs to; 0 for others
   Variant variant = Variant::Student;
   std::string summary;  // one line for --list
-  std::vector<ParamSpec> params;
+  std::vector<OptionSpec> params;
   // The sampler this integrator is meant to be seen with, when the user does not choose one.
   SamplerType defaultSampler = SamplerType::Independent;
   // Builds the integrator; may throw PathwayError for parameter combinations it refuses (before

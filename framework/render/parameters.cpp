@@ -10,8 +10,8 @@
 namespace pathway {
 namespace {
 
-const char* const kSwitchOn[] = {"on", "1", "true", "yes"};
-const char* const kSwitchOff[] = {"off", "0", "false", "no"};
+const char* const kToggleOn[] = {"on", "1", "true", "yes"};
+const char* const kToggleOff[] = {"off", "0", "false", "no"};
 
 bool isOneOf(const std::string& text, const char* const (&words)[4]) {
   return std::find(std::begin(words), std::end(words), text) != std::end(words);
@@ -26,58 +26,66 @@ std::string joinOptions(const std::vector<std::string>& options) {
 
 }  // namespace
 
-ParamSpec ParamSpec::integer(std::string name, long long defaultValue, long long minValue,
-                             long long maxValue, std::string help) {
+OptionSpec OptionSpec::integer(std::string name, long long defaultValue, double minValue,
+                               double maxValue, std::string help) {
   return {std::move(name),
-          ParamKind::Integer,
+          OptionKind::Integer,
           static_cast<double>(defaultValue),
-          static_cast<double>(minValue),
-          static_cast<double>(maxValue),
+          minValue,
+          maxValue,
           {},
           std::move(help)};
 }
 
-ParamSpec ParamSpec::real(std::string name, double defaultValue, double minValue, double maxValue,
-                          std::string help) {
-  return {std::move(name), ParamKind::Real, defaultValue, minValue, maxValue, {}, std::move(help)};
+OptionSpec OptionSpec::real(std::string name, double defaultValue, double minValue, double maxValue,
+                            std::string help) {
+  return {std::move(name), OptionKind::Real, defaultValue, minValue, maxValue, {}, std::move(help)};
 }
 
-ParamSpec ParamSpec::keepingTheExpectedImage() const {
-  ParamSpec spec = *this;
+OptionSpec OptionSpec::withDefault(double value, std::string newHelp) const {
+  OptionSpec spec = *this;
+  spec.defaultValue = value;
+  spec.help = std::move(newHelp);
+  return spec;
+}
+
+OptionSpec OptionSpec::keepingTheExpectedImage() const {
+  OptionSpec spec = *this;
   spec.changesExpectedImage = false;
   return spec;
 }
 
-ParamSpec ParamSpec::toggle(std::string name, bool defaultValue, std::string help) {
-  return {std::move(name), ParamKind::Switch, defaultValue ? 1.0 : 0.0, 0.0, 1.0, {},
+OptionSpec OptionSpec::toggle(std::string name, bool defaultValue, std::string help) {
+  return {std::move(name), OptionKind::Toggle, defaultValue ? 1.0 : 0.0, 0.0, 1.0, {},
           std::move(help)};
 }
 
-ParamSpec ParamSpec::choice(std::string name, const std::string& defaultOption,
-                            std::vector<std::string> options, std::string help) {
+OptionSpec OptionSpec::choice(std::string name, const std::string& defaultOption,
+                              std::vector<std::string> options, std::string help) {
   const auto it = std::find(options.begin(), options.end(), defaultOption);
   const double index = static_cast<double>(it - options.begin());
   const double last = static_cast<double>(options.size()) - 1.0;
-  return {std::move(name),    ParamKind::Choice, index, 0.0, last,
+  return {std::move(name),    OptionKind::Choice, index, 0.0, last,
           std::move(options), std::move(help)};
 }
 
-bool ParamSpec::accepts(double value) const {
+bool OptionSpec::accepts(double value) const {
   if (!std::isfinite(value) || value < minValue || value > maxValue) return false;
   return !isWholeNumber() || value == std::floor(value);
 }
 
-std::string ParamSpec::format(double value) const {
+std::string OptionSpec::format(double value) const {
   switch (kind) {
-    case ParamKind::Switch:
+    case OptionKind::Toggle:
       return value != 0.0 ? "on" : "off";
-    case ParamKind::Choice: {
+    case OptionKind::Choice: {
       const auto index = static_cast<size_t>(value);
       return index < options.size() ? options[index] : "?";
     }
-    case ParamKind::Integer:
-      return std::to_string(static_cast<long long>(value));
-    case ParamKind::Real:
+    case OptionKind::Integer:
+      if (std::fabs(value) < 9e18) return std::to_string(static_cast<long long>(value));
+      break;  // beyond long long (the seed's range): as a real number
+    case OptionKind::Real:
       break;
   }
   std::ostringstream out;
@@ -85,34 +93,34 @@ std::string ParamSpec::format(double value) const {
   return out.str();
 }
 
-std::string ParamSpec::describeRange() const {
+std::string OptionSpec::describeRange() const {
   switch (kind) {
-    case ParamKind::Switch:
+    case OptionKind::Toggle:
       return "on or off";
-    case ParamKind::Choice:
+    case OptionKind::Choice:
       return joinOptions(options);
-    case ParamKind::Integer:
-    case ParamKind::Real:
+    case OptionKind::Integer:
+    case OptionKind::Real:
       break;
   }
   return "[" + format(minValue) + ", " + format(maxValue) + "]";
 }
 
-ParamValues::ParamValues(std::vector<ParamSpec> specs) : specs_(std::move(specs)) {
-  for (const ParamSpec& spec : specs_) values_[spec.name] = spec.defaultValue;
+ParamValues::ParamValues(std::vector<OptionSpec> specs) : specs_(std::move(specs)) {
+  for (const OptionSpec& spec : specs_) values_[spec.name] = spec.defaultValue;
 }
 
-const ParamSpec& ParamValues::spec(const std::string& owner, const std::string& name) const {
-  for (const ParamSpec& candidate : specs_)
+const OptionSpec& ParamValues::spec(const std::string& owner, const std::string& name) const {
+  for (const OptionSpec& candidate : specs_)
     if (candidate.name == name) return candidate;
   std::string known;
-  for (const ParamSpec& candidate : specs_) known += (known.empty() ? "" : ", ") + candidate.name;
+  for (const OptionSpec& candidate : specs_) known += (known.empty() ? "" : ", ") + candidate.name;
   throw PathwayError("integrator '" + owner + "' has no parameter '" + name + "'" +
                      (known.empty() ? " (it takes none)" : " (it takes: " + known + ")"));
 }
 
 void ParamValues::set(const std::string& owner, const std::string& name, double value) {
-  const ParamSpec& declared = spec(owner, name);
+  const OptionSpec& declared = spec(owner, name);
   if (!declared.accepts(value))
     throw PathwayError("parameter '" + name + "' of '" + owner + "' is out of range: " +
                        declared.format(value) + " is not in " + declared.describeRange());
@@ -121,21 +129,21 @@ void ParamValues::set(const std::string& owner, const std::string& name, double 
 
 void ParamValues::setText(const std::string& owner, const std::string& name,
                           const std::string& text) {
-  const ParamSpec& declared = spec(owner, name);
+  const OptionSpec& declared = spec(owner, name);
   const std::string prefix = "parameter '" + name + "' of '" + owner + "' ";
   switch (declared.kind) {
-    case ParamKind::Switch:
-      if (isOneOf(text, kSwitchOn)) return set(owner, name, 1.0);
-      if (isOneOf(text, kSwitchOff)) return set(owner, name, 0.0);
-      throw PathwayError(prefix + "is a switch: write on or off, got '" + text + "'");
-    case ParamKind::Choice: {
+    case OptionKind::Toggle:
+      if (isOneOf(text, kToggleOn)) return set(owner, name, 1.0);
+      if (isOneOf(text, kToggleOff)) return set(owner, name, 0.0);
+      throw PathwayError(prefix + "is a toggle: write on or off, got '" + text + "'");
+    case OptionKind::Choice: {
       const auto it = std::find(declared.options.begin(), declared.options.end(), text);
       if (it != declared.options.end())
         return set(owner, name, static_cast<double>(it - declared.options.begin()));
       throw PathwayError(prefix + "must be " + declared.describeRange() + ", got '" + text + "'");
     }
-    case ParamKind::Integer:
-    case ParamKind::Real:
+    case OptionKind::Integer:
+    case OptionKind::Real:
       break;
   }
   char* end = nullptr;
@@ -157,23 +165,15 @@ double ParamValues::number(const std::string& name) const {
   return it->second;
 }
 
-const std::string& ParamValues::choice(const std::string& name) const {
-  const double index = number(name);
-  for (const ParamSpec& declared : specs_)
-    if (declared.name == name && declared.kind == ParamKind::Choice)
-      return declared.options.at(static_cast<size_t>(index));
-  throw PathwayError("internal: parameter '" + name + "' is not a choice");
-}
-
 std::string ParamValues::describe() const {
   std::string text;
-  for (const ParamSpec& declared : specs_)
+  for (const OptionSpec& declared : specs_)
     text +=
         (text.empty() ? "" : " ") + declared.name + "=" + declared.format(number(declared.name));
   return text;
 }
 
-ParamValues resolveParams(const std::string& owner, const std::vector<ParamSpec>& specs,
+ParamValues resolveParams(const std::string& owner, const std::vector<OptionSpec>& specs,
                           const std::map<std::string, std::string>& given) {
   ParamValues values(specs);
   for (const auto& [name, text] : given) values.setText(owner, name, text);
@@ -181,9 +181,9 @@ ParamValues resolveParams(const std::string& owner, const std::vector<ParamSpec>
 }
 
 std::string expectedImageDifference(const ParamValues& a, const ParamValues& b) {
-  for (const ParamSpec& spec : a.specs()) {
+  for (const OptionSpec& spec : a.specs()) {
     if (!spec.changesExpectedImage) continue;
-    for (const ParamSpec& other : b.specs()) {
+    for (const OptionSpec& other : b.specs()) {
       if (other.name != spec.name || !other.changesExpectedImage) continue;
       const double mine = a.number(spec.name), theirs = b.number(spec.name);
       if (mine != theirs)

@@ -1,6 +1,8 @@
-// Integrator parameters, declared once by kind (integer, real, switch, choice) with their default,
-// range and help. The CLI, the viewer panel, the metadata and the docs all read the same
-// declarations; values outside them are refused, never clamped.
+// Options: every value a user can set — a render setting (render/render_settings.h), a chart's
+// (chart/chart_spec.h) or a stage's parameter (framework/stages/) — is declared once as an
+// OptionSpec of one kind (integer, real, toggle, choice) with its default, range and help. The CLI
+// options, the viewer's widgets, the metadata and the docs are made from the declarations;
+// values outside them are refused, never clamped.
 #pragma once
 
 #include <map>
@@ -10,16 +12,16 @@
 
 namespace pathway {
 
-enum class ParamKind {
+enum class OptionKind {
   Integer,  // a whole number in [minValue, maxValue]
   Real,     // a real number in [minValue, maxValue]
-  Switch,   // on or off (written on/off, also accepted as 1/0, true/false)
+  Toggle,   // on or off (written on/off, also accepted as 1/0, true/false)
   Choice,   // one of `options`, by name; stored as the option's index
 };
 
-struct ParamSpec {
-  std::string name;  // lower-case, dash-separated: "ao-distance"
-  ParamKind kind = ParamKind::Real;
+struct OptionSpec {
+  std::string name;  // lower-case, dash-separated: "spp" (--spp), "ao-distance" (-p ao-distance=)
+  OptionKind kind = OptionKind::Real;
   double defaultValue = 0.0;
   double minValue = 0.0;
   double maxValue = 0.0;
@@ -30,18 +32,27 @@ struct ParamSpec {
   // shared only across values of parameters that do not (charts, the viewer's error plot).
   bool changesExpectedImage = true;
 
-  static ParamSpec integer(std::string name, long long defaultValue, long long minValue,
-                           long long maxValue, std::string help);
-  static ParamSpec real(std::string name, double defaultValue, double minValue, double maxValue,
-                        std::string help);
-  static ParamSpec toggle(std::string name, bool defaultValue, std::string help);
-  static ParamSpec choice(std::string name, const std::string& defaultOption,
-                          std::vector<std::string> options, std::string help);
+  // (The bounds are doubles so that a range can reach 2^64, the seed's.)
+  static OptionSpec integer(std::string name, long long defaultValue, double minValue,
+                            double maxValue, std::string help);
+  static OptionSpec real(std::string name, double defaultValue, double minValue, double maxValue,
+                         std::string help);
+  static OptionSpec toggle(std::string name, bool defaultValue, std::string help);
+  static OptionSpec choice(std::string name, const std::string& defaultOption,
+                           std::vector<std::string> options, std::string help);
 
   // This declaration, marked as one that changes only noise and cost.
-  ParamSpec keepingTheExpectedImage() const;
+  OptionSpec keepingTheExpectedImage() const;
+  // This declaration with another default and help, for a command that uses the same setting
+  // differently (the viewer refines towards a far larger spp than a render takes).
+  OptionSpec withDefault(double value, std::string help) const;
 
-  bool isWholeNumber() const { return kind != ParamKind::Real; }
+  template <typename T>
+  T defaultAs() const {
+    return static_cast<T>(defaultValue);
+  }
+
+  bool isWholeNumber() const { return kind != OptionKind::Real; }
   // True when `value` is one this parameter can take (in range; whole where it must be).
   bool accepts(double value) const;
   // The value as a user writes it: "4", "0.25", "on", "power".
@@ -55,7 +66,7 @@ class ParamValues {
  public:
   ParamValues() = default;
   // Every parameter at its default.
-  explicit ParamValues(std::vector<ParamSpec> specs);
+  explicit ParamValues(std::vector<OptionSpec> specs);
 
   // Sets a declared parameter; throws PathwayError naming `owner`, the parameter and its range
   // when the name is unknown or the value is not one it accepts.
@@ -63,21 +74,19 @@ class ParamValues {
   // The same from text as a user writes it ("4", "on", "power").
   void setText(const std::string& owner, const std::string& name, const std::string& text);
 
-  double number(const std::string& name) const;  // throws if the name was never declared
-  int integer(const std::string& name) const { return static_cast<int>(number(name)); }
-  float real(const std::string& name) const { return static_cast<float>(number(name)); }
-  bool flag(const std::string& name) const { return number(name) != 0.0; }
-  const std::string& choice(const std::string& name) const;  // the chosen option's name
+  // Throws if the name was never declared. Stages read their typed struct instead
+  // (render/stage_definition.h).
+  double number(const std::string& name) const;
 
-  const std::vector<ParamSpec>& specs() const { return specs_; }
+  const std::vector<OptionSpec>& specs() const { return specs_; }
   // "name=value name=value", in declaration order, each as setText() reads it back.
   std::string describe() const;
   bool operator==(const ParamValues& o) const { return values_ == o.values_; }
 
  private:
-  const ParamSpec& spec(const std::string& owner, const std::string& name) const;
+  const OptionSpec& spec(const std::string& owner, const std::string& name) const;
 
-  std::vector<ParamSpec> specs_;
+  std::vector<OptionSpec> specs_;
   std::map<std::string, double> values_;
 };
 
@@ -86,7 +95,7 @@ class ParamValues {
 std::string expectedImageDifference(const ParamValues& a, const ParamValues& b);
 
 // The defaults of `specs` with `given` (name -> text) applied; throws PathwayError as set() does.
-ParamValues resolveParams(const std::string& owner, const std::vector<ParamSpec>& specs,
+ParamValues resolveParams(const std::string& owner, const std::vector<OptionSpec>& specs,
                           const std::map<std::string, std::string>& given);
 
 // "name=value" -> (name, value); throws PathwayError on text without '='.

@@ -20,8 +20,7 @@ RenderRecipe RenderChoices::recipe() const {
   s.seed = seed;
   s.filter = parseFilterType(filter);
   s.filterRadius = filterRadius;
-  s.check();
-  return recipe;
+  return recipe;  // the settings are checked once, by the Renderer
 }
 
 }  // namespace pathway

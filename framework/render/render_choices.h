@@ -12,18 +12,18 @@ namespace pathway {
 
 struct RenderChoices {
   std::string scene;
-  std::string integrator = "stage1";
+  std::string integrator = setting::kIntegrator;
   std::vector<std::string> params;    // "name=value", checked against the integrator's declarations
   std::string earlierStages = "own";  // "own" or "reference" (see EarlierStages)
   std::string sampler;                // empty: the integrator's own default
-  uint64_t seed = setting::kSeed.defaultValue;
+  uint64_t seed = setting::kSeed.defaultAs<uint64_t>();
   std::string filter = filterTypeName(setting::kFilter);
-  float filterRadius = setting::kFilterRadius.defaultValue;  // 0: the filter's natural radius
+  float filterRadius = setting::kFilterRadius.defaultAs<float>();  // 0: the filter's own radius
   bool strictScene = false;  // refuse a scene requiring lamps instead of ignoring them (--strict)
 
   // The recipe these choices describe: integrator, parameters, earlier stages, sampler, seed and
   // filter (the other settings keep their defaults). Throws PathwayError naming the first unknown
-  // name or refused value.
+  // name or refused parameter value; the settings' ranges are checked when the render starts.
   RenderRecipe recipe() const;
 };
 

@@ -3,7 +3,6 @@
 #include <cstdio>
 
 #include "core/error.h"
-#include "io/partial_film.h"
 
 namespace pathway {
 namespace {
@@ -22,41 +21,37 @@ RenderRecipe completed(const IntegratorInfo& info, RenderRecipe recipe) {
   return recipe;
 }
 
-ImageMetadata renderMetadata(const std::string& scenePath, const std::string& sceneHash, int stage,
-                             const RenderRecipe& recipe, const RenderStats& stats,
-                             size_t unresolvedPixels, const std::vector<TodoRecord>& todos) {
-  std::string todoSites;
-  for (const TodoRecord& todo : todos)
-    todoSites += (todoSites.empty() ? "" : "; ") + todo.file + ":" + std::to_string(todo.line);
+RenderMetadata renderMetadata(const std::string& scenePath, const std::string& sceneHash, int stage,
+                              const RenderRecipe& recipe, const RenderStats& stats,
+                              size_t unresolvedPixels, const std::vector<TodoRecord>& todos) {
   const RenderSettings& s = recipe.settings;
   const RayCounters& c = stats.counters;
-  const double seconds = stats.seconds;
-  return {
-      {"pathway:scene", scenePath},
-      {"pathway:sceneHash", sceneHash},
-      {"pathway:integrator", recipe.integrator},
-      {"pathway:stage", std::to_string(stage)},
-      {"pathway:params", recipe.params.describe()},
-      {"pathway:earlierStages", earlierStagesName(recipe.earlierStages)},
-      {"pathway:spp", std::to_string(stats.samplesPerPixel)},
-      {kSampleRangeKey, std::to_string(s.firstSample()) + ":" +
-                            std::to_string(s.firstSample() + stats.samplesPerPixel)},
-      {kSampleRangeOfKey, std::to_string(s.samplesPerPixel)},
-      {"pathway:sampler", samplerTypeName(s.sampler)},
-      {"pathway:seed", std::to_string(s.seed)},
-      {"pathway:filter", filterTypeName(s.filter)},
-      {"pathway:filterRadius", std::to_string(s.filterRadiusPixels())},
-      {"pathway:primaryRays", std::to_string(c.primary)},
-      {"pathway:secondaryRays", std::to_string(c.secondary)},
-      {"pathway:shadowRays", std::to_string(c.shadow)},
-      {"pathway:samples", std::to_string(c.samples)},
-      {"pathway:invalidSamples", std::to_string(c.invalidSamples)},
-      {"pathway:unresolvedPixels", std::to_string(unresolvedPixels)},
-      {"pathway:seconds", std::to_string(seconds)},
-      {"pathway:raysPerSecond", std::to_string(seconds > 0 ? c.totalRays() / seconds : 0.0)},
-      {"pathway:todos", std::to_string(todos.size())},
-      {"pathway:todoSites", todoSites},
-  };
+  RenderMetadata m;
+  m.scene = scenePath;
+  m.sceneHash = sceneHash;
+  m.integrator = recipe.integrator;
+  m.stage = stage;
+  m.params = recipe.params.describe();
+  m.earlierStages = earlierStagesName(recipe.earlierStages);
+  m.sampler = s.sampler;
+  m.seed = s.seed;
+  m.filter = s.filter;
+  m.filterRadius = s.filterRadiusPixels();
+  m.spp = stats.samplesPerPixel;
+  m.sampleBegin = s.firstSample();
+  m.sampleEnd = s.firstSample() + stats.samplesPerPixel;
+  m.samplesOfWhole = s.samplesPerPixel;
+  m.primaryRays = c.primary;
+  m.secondaryRays = c.secondary;
+  m.shadowRays = c.shadow;
+  m.samples = c.samples;
+  m.invalidSamples = c.invalidSamples;
+  m.unresolvedPixels = unresolvedPixels;
+  m.timing = RenderTiming{stats.seconds, stats.seconds > 0 ? c.totalRays() / stats.seconds : 0.0};
+  m.todos = static_cast<int>(todos.size());
+  for (const TodoRecord& todo : todos)
+    m.todoSites.push_back(todo.file + ":" + std::to_string(todo.line));
+  return m;
 }
 
 }  // namespace
@@ -71,7 +66,6 @@ RenderSession::RenderSession(const RayTracer& tracer, const Camera& camera,
   char hash[17];
   std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(tracer.sceneHash()));
   sceneHash_ = hash;
-  recipe_.settings.check();
   integratorObject_ = info_.create({recipe_.params, kit_, tracer.scene()});
   renderer_ = std::make_unique<Renderer>(tracer, camera_, *integratorObject_, kit_.stage1(),
                                          recipe_.settings);
@@ -79,13 +73,13 @@ RenderSession::RenderSession(const RayTracer& tracer, const Camera& camera,
 
 RenderSession::~RenderSession() = default;
 
-RenderResult RenderSession::develop(std::vector<TodoRecord> todos) {
+RenderResult RenderSession::develop() {
   RenderResult result;
   const Film& film = renderer_->film();
   film.developAll(result.images.color, result.images.variance, result.images.weight,
                   &result.unresolvedPixels);
   result.stats = renderer_->stats();
-  result.todos = std::move(todos);
+  result.todos = renderer_->todos().records();
   result.metadata = renderMetadata(tracer_.scene().sourcePath, sceneHash_, info_.stage, recipe_,
                                    result.stats, result.unresolvedPixels, result.todos);
   return result;
@@ -93,10 +87,9 @@ RenderResult RenderSession::develop(std::vector<TodoRecord> todos) {
 
 RenderResult runRender(const RayTracer& tracer, const Camera& camera, const RenderRecipe& recipe,
                        const std::function<void(const RenderStats&)>& onPass) {
-  clearTodosHit();  // from here on, every TODO that runs belongs to this render
   RenderSession session(tracer, camera, recipe);
   session.renderer().renderAll(onPass);
-  return session.develop(todosHit());
+  return session.develop();
 }
 
 RenderResult runRender(const RayTracer& tracer, const RenderRecipe& recipe,

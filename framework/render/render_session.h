@@ -20,7 +20,7 @@ namespace pathway {
 
 // Everything that decides an image besides the scene and the camera.
 struct RenderRecipe {
-  std::string integrator = "stage1";
+  std::string integrator = setting::kIntegrator;
   // The integrator's parameter values (from resolveParams or ParamValues::set, which refuse
   // values out of range); left empty, every parameter takes its declared default.
   ParamValues params;
@@ -32,8 +32,8 @@ struct RenderResult {
   FilmImages images;
   RenderStats stats;
   size_t unresolvedPixels = 0;    // Σw ≈ 0 (negative filter lobes at low spp); written as 0
-  std::vector<TodoRecord> todos;  // unfinished stage code that ran during this render
-  ImageMetadata metadata;         // settings and counters, for the EXR header
+  std::vector<TodoRecord> todos;  // unfinished stage code this render ran
+  RenderMetadata metadata;        // settings and counters, for the EXR header
 };
 
 class RenderSession {
@@ -50,9 +50,9 @@ class RenderSession {
   const IntegratorInfo& integrator() const { return info_; }
   const RenderRecipe& recipe() const { return recipe_; }  // with every parameter value filled in
 
-  // The film so far, developed, with counters and "pathway:*" metadata (`todos`: the unfinished
-  // stage code that ran, which the metadata counts).
-  RenderResult develop(std::vector<TodoRecord> todos);  // (merges the renderer's film)
+  // The film so far, developed, with counters, the TODOs that ran and metadata (merges the
+  // renderer's film).
+  RenderResult develop();
 
  private:
   const RayTracer& tracer_;
@@ -65,8 +65,8 @@ class RenderSession {
   std::unique_ptr<Renderer> renderer_;
 };
 
-// A whole render as the CLI and the tests run it: forgets earlier TODO hits, renders every pass
-// (`onPass` sees the progress after each) and develops the result.
+// A whole render as the CLI and the tests run it: renders every pass (`onPass` sees the progress
+// after each) and develops the result.
 RenderResult runRender(const RayTracer& tracer, const Camera& camera, const RenderRecipe& recipe,
                        const std::function<void(const RenderStats&)>& onPass = {});
 // The same with the scene's own camera (or the default framing) at the recipe's image size.

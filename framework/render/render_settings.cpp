@@ -5,11 +5,10 @@
 namespace pathway {
 namespace {
 
-template <typename T>
-void require(const SettingSpec<T>& spec, T value) {
+void require(const OptionSpec& spec, double value) {
   if (!spec.accepts(value))
-    throw PathwayError(std::string(spec.name) + " must be in [" + std::to_string(spec.minValue) +
-                       ", " + std::to_string(spec.maxValue) + "], got " + std::to_string(value));
+    throw PathwayError(spec.name + " must be in " + spec.describeRange() + ", got " +
+                       spec.format(value));
 }
 
 }  // namespace

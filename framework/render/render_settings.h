@@ -1,74 +1,74 @@
-// The render settings every command shares, each declared once with its default, range and help.
-// `pathway render`, `pathway view` (options and panel widgets), the renderer's own checks and the
-// EXR metadata all read these declarations.
+// The render settings every command shares, each declared once as an option (render/parameters.h)
+// with its default, range and help. The commands' CLI options, the viewer's widgets and the
+// renderer's one check (when a Renderer is made) are all made from these declarations.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
-#include <limits>
 #include <string>
 
 #include "film/pixel_filter.h"
+#include "render/parameters.h"
 #include "sampling/sampler.h"
 
 namespace pathway {
 
-template <typename T>
-struct SettingSpec {
-  const char* name;  // the command-line option, without "--"
-  T defaultValue;
-  T minValue;
-  T maxValue;
-  const char* help;
-
-  bool accepts(T value) const { return value >= minValue && value <= maxValue; }
-};
-
 namespace setting {
 
-inline constexpr SettingSpec<int> kWidth{"width", 512, 1, 16384, "Image width in pixels"};
-inline constexpr SettingSpec<int> kHeight{
-    "height", 512, 1, 16384, "Image height in pixels (default: from the camera's aspect ratio)"};
-inline constexpr SettingSpec<uint32_t> kSamplesPerPixel{"spp", 16, 1, 1u << 20,
-                                                        "Samples per pixel"};
-// The viewer refines progressively, so it aims higher; same range.
-inline constexpr SettingSpec<uint32_t> kViewerSamplesPerPixel{
-    "spp", 4096, kSamplesPerPixel.minValue, kSamplesPerPixel.maxValue,
-    "Samples per pixel at which rendering stops"};
+inline const OptionSpec kWidth =
+    OptionSpec::integer("width", 512, 1, 16384, "Image width in pixels");
+inline const OptionSpec kHeight =
+    OptionSpec::integer("height", 512, 1, 16384, "Image height in pixels");
+inline const OptionSpec kSamplesPerPixel =
+    OptionSpec::integer("spp", 16, 1, 1 << 20, "Samples per pixel");
+inline const OptionSpec kSamplesPerPass = OptionSpec::integer(
+    "spp-per-pass", 1, 1, 1 << 20,
+    "Samples added to every pixel per pass (the viewer shows an image after each)");
+inline const OptionSpec kSeed =
+    OptionSpec::integer("seed", 0, 0, 18446744073709551615.0, "Random seed; same seed, same image");
+inline const OptionSpec kThreads =
+    OptionSpec::integer("threads", 0, 0, 1024, "Worker threads (0: all cores)");
+inline const OptionSpec kFilterRadius = OptionSpec::real(
+    "filter-radius", 0.0, 0.0, kMaxFilterRadius,
+    "Filter support in pixels (0: the filter's own, box 0.5, tent 1, mitchell 2, gaussian 1.5)");
+inline const OptionSpec kExposure = OptionSpec::real(
+    "exposure", 0.0, -20.0, 20.0, "Exposure in stops for PNG and display (EXR is never scaled)");
+inline const OptionSpec kTileSize = OptionSpec::integer(
+    "tile-size", 32, 4, 256, "Pixels per tile side (the unit of parallel work)");
 // The viewer's "Make reference" (error plot): well beyond what the panes reach in a few seconds,
 // so the reference's own noise stays below their error for most of the curve.
-inline constexpr SettingSpec<uint32_t> kReferenceSamplesPerPixel{
-    "reference-spp", 1024, 16, kSamplesPerPixel.maxValue,
-    "Samples per pixel of the reference the viewer makes on demand (Make reference, key M)"};
-inline constexpr SettingSpec<uint32_t> kSamplesPerPass{
-    "spp-per-pass", 1, 1, kSamplesPerPixel.maxValue,
-    "Samples added to every pixel per pass (the viewer shows an image after each)"};
-inline constexpr SettingSpec<uint64_t> kSeed{"seed", 0, 0, std::numeric_limits<uint64_t>::max(),
-                                             "Random seed; same seed, same image"};
-inline constexpr SettingSpec<int> kThreads{"threads", 0, 0, 1024, "Worker threads (0: all cores)"};
-inline constexpr SettingSpec<float> kFilterRadius{
-    "filter-radius", 0.0f, 0.0f, kMaxFilterRadius,
-    "Filter support in pixels (0: the filter's own, box 0.5, tent 1, mitchell 2, gaussian 1.5)"};
-inline constexpr SettingSpec<float> kExposure{"exposure", 0.0f, -20.0f, 20.0f,
-                                              "Exposure in stops for PNG and display (EXR is "
-                                              "never scaled)"};
-inline constexpr SettingSpec<int> kTileSize{"tile-size", 32, 4, 256,
-                                            "Pixels per tile side (the unit of parallel work)"};
+inline const OptionSpec kReferenceSamplesPerPixel = OptionSpec::integer(
+    "reference-spp", 1024, 16, 1 << 20,
+    "Samples per pixel of the reference the viewer makes on demand (Make reference, key M)");
 inline constexpr FilterType kFilter = FilterType::Box;
+// The integrator a render or the viewer starts with when none is named.
+inline constexpr const char* kIntegrator = "stage1";
 // The sampler has no fixed default: each integrator declares the one it is meant to be seen with.
 
 }  // namespace setting
 
+// References render with seeds of their own, far above the seeds users pick and submissions are
+// graded with (small numbers), so a reference never repeats the samples of the image it judges:
+// the grader's replicate i takes kReferenceSeed + i, a chart's reference kReferenceSeed, the
+// viewer's on-demand reference kReferenceSeed + the pane's seed.
+inline constexpr uint64_t kReferenceSeed = 1000000;
+
+// A render in this many passes keeps a progress bar moving; more would only add per-pass cost.
+inline uint32_t samplesPerProgressPass(uint32_t samples) {
+  return std::max(1u, samples / 16);
+}
+
 struct RenderSettings {
-  int width = setting::kWidth.defaultValue;
-  int height = setting::kHeight.defaultValue;
-  uint32_t samplesPerPixel = setting::kSamplesPerPixel.defaultValue;
-  uint32_t samplesPerPass = setting::kSamplesPerPass.defaultValue;
+  int width = setting::kWidth.defaultAs<int>();
+  int height = setting::kHeight.defaultAs<int>();
+  uint32_t samplesPerPixel = setting::kSamplesPerPixel.defaultAs<uint32_t>();
+  uint32_t samplesPerPass = setting::kSamplesPerPass.defaultAs<uint32_t>();
   SamplerType sampler = SamplerType::Independent;
-  uint64_t seed = setting::kSeed.defaultValue;
-  int threads = setting::kThreads.defaultValue;
+  uint64_t seed = setting::kSeed.defaultAs<uint64_t>();
+  int threads = setting::kThreads.defaultAs<int>();
   FilterType filter = setting::kFilter;
-  float filterRadius = setting::kFilterRadius.defaultValue;  // 0: the filter's natural radius
-  int tileSize = setting::kTileSize.defaultValue;
+  float filterRadius = setting::kFilterRadius.defaultAs<float>();  // 0: the filter's natural radius
+  int tileSize = setting::kTileSize.defaultAs<int>();
   // The sample indices this render draws: [sampleBegin, sampleEnd) of the `samplesPerPixel` a
   // whole render would draw (sampleEnd 0: all of them). Parts of one render over disjoint ranges
   // merge into that render's image (`pathway merge`).
@@ -83,7 +83,8 @@ struct RenderSettings {
   float filterRadiusPixels() const {
     return filterRadius > 0.0f ? filterRadius : naturalFilterRadius(filter);
   }
-  // Throws PathwayError naming the first setting outside its declared range.
+  // Throws PathwayError naming the first setting outside its declared range. The Renderer calls
+  // it, once, whichever way a render was asked for.
   void check() const;
 
   bool operator==(const RenderSettings& o) const;

@@ -71,7 +71,8 @@ Renderer::~Renderer() = default;
 
 void Renderer::renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount,
                           const std::atomic<bool>* cancel) {
-  tile.counters = RayCounters{};  // this pass's (the block adds to what earlier passes left)
+  tile.counters = RayCounters{};         // this pass's (the block adds to what earlier passes left)
+  const CurrentTodoLog logged(&todos_);  // TODOs this thread runs now are this render's
   const RenderContext context(tracer_, tile.counters);
   uint64_t* pixelRays = tile.rays.data();
   // How many numbers the previous sample drew predicts the next one's (SampleStream).

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/ray_counters.h"
+#include "core/todo.h"
 #include "film/film.h"
 #include "film/pixel_filter.h"
 #include "render/integrator.h"
@@ -56,6 +57,7 @@ class Renderer {
   const std::vector<uint64_t>& raysPerPixel() const { return raysPerPixel_; }
   const RenderStats& stats() const { return stats_; }
   const RenderSettings& settings() const { return settings_; }
+  const TodoLog& todos() const { return todos_; }  // the unfinished stage code its tiles ran
   const PixelFilter& filter() const { return filter_; }
 
  private:
@@ -77,6 +79,7 @@ class Renderer {
   bool blocksHoldSums_ = false;  // finished passes not yet merged into film_
   std::unique_ptr<tbb::task_arena> arena_;
   RenderStats stats_;
+  TodoLog todos_;
 };
 
 }  // namespace pathway

@@ -131,6 +131,7 @@
 #include "render/eye_light_integrator.h"
 #include "render/integrator.h"
 #include "render/integrator_registry.h"
+#include "render/stage_definition.h"
 #include "render/stage_kit.h"
 
 #if defined(PATHWAY_VARIANT_REFERENCE)
@@ -146,28 +147,32 @@ namespace pathway {
 namespace {
 
 // Registers `IntegratorType` as stage `stage` of the variant being compiled ("stage3" in
-// assignments/, "stage3@ref" in solutions/), under the name, summary and parameters the
-// framework declares for that stage (render/stage_catalog.cpp). The integrator is built from an
-// IntegratorSetup (parameters, kit, scene), or from nothing if it needs none.
-template <typename IntegratorType>
-bool registerStage(int stage) {
+// assignments/, "stage3@ref" in solutions/), under the name, summary and parameters the stage
+// declares (framework/stages/stageN.h). The integrator is built from a StageSetup<Params> (its
+// typed parameters, the kit, the scene), or from nothing if it needs none.
+template <typename IntegratorType, typename Params>
+bool registerStage(const StageDefinition<Params>& stage) {
   return registerStageIntegrator(
-      stage, PATHWAY_THIS_VARIANT, [](const IntegratorSetup& setup) -> std::unique_ptr<Integrator> {
-        if constexpr (std::is_constructible_v<IntegratorType, const IntegratorSetup&>)
-          return std::make_unique<IntegratorType>(setup);
-        else
+      stage.number, PATHWAY_THIS_VARIANT,
+      [&stage](const IntegratorSetup& setup) -> std::unique_ptr<Integrator> {
+        if constexpr (std::is_constructible_v<IntegratorType, const StageSetup<Params>&>) {
+          const Params params = stage.read(setup.params);
+          return std::make_unique<IntegratorType>(
+              StageSetup<Params>{params, setup.kit, setup.scene});
+        } else {
           return (void)setup, std::make_unique<IntegratorType>();
+        }
       });
 }
 
 // The same, for the stages that hand functions on to the later ones (stages 1 and 2).
-template <typename IntegratorType>
-bool registerStage(int stage, const Stage1Functions& handedOn) {
+template <typename IntegratorType, typename Params>
+bool registerStage(const StageDefinition<Params>& stage, const Stage1Functions& handedOn) {
   provideStage1(PATHWAY_THIS_VARIANT, handedOn);
   return registerStage<IntegratorType>(stage);
 }
-template <typename IntegratorType>
-bool registerStage(int stage, const Stage2Functions& handedOn) {
+template <typename IntegratorType, typename Params>
+bool registerStage(const StageDefinition<Params>& stage, const Stage2Functions& handedOn) {
   provideStage2(PATHWAY_THIS_VARIANT, handedOn);
   return registerStage<IntegratorType>(stage);
 }

@@ -1,10 +1,12 @@
-// The five stages of the course as the framework knows them: name, one-line summary, parameters
-// (declared once here, so the skeleton in assignments/ and the solution in solutions/ cannot
-// drift apart), the sampler each stage is meant to be seen with, and any check that must refuse a
-// request before rendering starts (stage 4's ray budget). `pathway render --list`, the viewer
-// panel and the docs read these declarations.
+// The five stages of the course as the framework knows them: name, one-line summary, parameters,
+// the sampler each stage is meant to be seen with, and any check that must refuse a request
+// before rendering starts (stage 4's ray budget). Each stage declares these beside its code
+// (framework/stages/stageN.h, shared by the skeleton and the solution, so they cannot drift
+// apart); this catalog holds them without the stages' typed structs, for `pathway render
+// --list`, the viewer panel, the grader and the docs.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,10 +22,10 @@ struct StageDeclaration {
   std::string name;  // "stage3"; the reference registers as "stage3@ref"
   std::string file;  // the stage's file, the same name in assignments/stageN and solutions/stageN
   std::string summary;
-  std::vector<ParamSpec> params;
+  std::vector<OptionSpec> params;
   SamplerType defaultSampler = SamplerType::Independent;
   // Refuses parameter values that must not start rendering (throws PathwayError); may be null.
-  void (*check)(const std::string& integratorName, const ParamValues& params) = nullptr;
+  std::function<void(const std::string& integratorName, const ParamValues& params)> check;
 };
 
 // Stage `stage` in 1..kStageCount; throws PathwayError otherwise.

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "grade/grade_report.h"
+#include "grade/reference_comparison.h"
 #include "viewer/stage_reference.h"
 
 namespace pathway {
@@ -35,16 +36,9 @@ FrameGrade gradeFrame(const LaneFrame& frame, const LoadedScene& scene) {
     const uint32_t spp = std::max(frame.stats.samplesPerPixel, 16u);
     const RenderResult result = *renderStageReference(frame, scene, spp, spp);
 
-    ComparisonInput input;
-    input.image = &frame.images.color;
-    input.imageVariance = &frame.images.variance;
-    input.reference = &result.images.color;
-    input.referenceVariance = &result.images.variance;
-    input.negativeValuesAllowed = hasNegativeLobes(frame.settings.filter);
-    input.pixelCorrelation = filterPixelCorrelation(frame.settings.filterRadiusPixels());
-    input.droppedSamples = frame.stats.counters.invalidSamples;
     const ComparisonSettings settings;
-    grade.comparison = compareImages(input, settings);
+    grade.comparison = compareWithReference(frame.images, frame.metadata,
+                                            {result.images, result.metadata}, settings);
     grade.passed = grade.comparison.passed(settings);
     if (!grade.comparison.tiles.empty()) grade.heatmap = zHeatmap(grade.comparison);
     std::ostringstream summary;

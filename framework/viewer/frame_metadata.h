@@ -1,5 +1,5 @@
-// The EXR metadata of an image saved from the viewer: the same "pathway:" keys as
-// `pathway render` writes, plus the viewer's camera, so a saved image says how it was made.
+// The metadata of an image saved from the viewer: what `pathway render` writes, plus the
+// viewer's camera, so a saved image says how it was made.
 #pragma once
 
 #include "io/image_io.h"
@@ -7,6 +7,6 @@
 
 namespace pathway {
 
-ImageMetadata frameMetadata(const LaneFrame& frame);
+RenderMetadata frameMetadata(const LaneFrame& frame);
 
 }  // namespace pathway

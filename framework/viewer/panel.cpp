@@ -11,6 +11,8 @@
 
 #include "render/integrator_registry.h"
 #include "render/reference_library.h"
+#include "viewer/option_widget.h"
+#include "viewer/viewer_options.h"
 
 namespace pathway {
 namespace {
@@ -28,68 +30,12 @@ const IntegratorInfo* findInfo(const std::string& name) {
   return nullptr;
 }
 
-// One widget per declared parameter, by its kind: a checkbox for a switch, a combo for a choice,
-// sliders for numbers. Every widget stays inside the declared range (AlwaysClamp also holds for
-// values typed with Ctrl+click), so the render never sees a value it would refuse.
+// One widget per declared parameter (viewer/option_widget.h).
 void parameterWidgets(ViewerState& state, int lane, const IntegratorInfo& info) {
   if (info.params.empty()) ImGui::TextDisabled("(no parameters)");
-  for (const ParamSpec& spec : info.params) {
-    const double value = paramValue(state, lane, info, spec);
-    const char* name = spec.name.c_str();
-    const ImGuiSliderFlags clamp = ImGuiSliderFlags_AlwaysClamp;
-    bool changed = false;
-    double result = value;
-    switch (spec.kind) {
-      case ParamKind::Switch: {
-        bool on = value != 0.0;
-        changed = ImGui::Checkbox(name, &on);
-        result = on ? 1.0 : 0.0;
-        break;
-      }
-      case ParamKind::Choice: {
-        const auto chosen = static_cast<size_t>(value);
-        if (ImGui::BeginCombo(name, spec.format(value).c_str())) {
-          for (size_t i = 0; i < spec.options.size(); ++i) {
-            if (ImGui::Selectable(spec.options[i].c_str(), i == chosen)) {
-              changed = i != chosen;
-              result = static_cast<double>(i);
-            }
-          }
-          ImGui::EndCombo();
-        }
-        break;
-      }
-      case ParamKind::Integer: {
-        // 64-bit: some limits (e.g. a ray budget) go far beyond int.
-        long long v = static_cast<long long>(value);
-        const long long lo = static_cast<long long>(spec.minValue);
-        const long long hi = static_cast<long long>(spec.maxValue);
-        if (hi - lo <= 64)
-          changed = ImGui::SliderScalar(name, ImGuiDataType_S64, &v, &lo, &hi, "%lld", clamp);
-        else if (lo > 0)  // counts over decades (rays per hit, budgets): a log scale
-          changed = ImGui::SliderScalar(name, ImGuiDataType_S64, &v, &lo, &hi, "%lld",
-                                        clamp | ImGuiSliderFlags_Logarithmic);
-        else
-          changed = ImGui::DragScalar(name, ImGuiDataType_S64, &v, 0.2f, &lo, &hi, "%lld", clamp);
-        result = static_cast<double>(v);
-        break;
-      }
-      case ParamKind::Real: {
-        double v = value;
-        ImGuiSliderFlags flags = clamp;
-        // Ranges over decades (distances, strengths) are easier to set on a log scale.
-        if (spec.minValue > 0.0 && spec.maxValue / spec.minValue >= 100.0)
-          flags |= ImGuiSliderFlags_Logarithmic;
-        changed = ImGui::SliderScalar(name, ImGuiDataType_Double, &v, &spec.minValue,
-                                      &spec.maxValue, "%.4g", flags);
-        result = v;
-        break;
-      }
-    }
-    const bool typed = spec.kind == ParamKind::Integer || spec.kind == ParamKind::Real;
-    tooltip(spec.help + "\n(default " + spec.format(spec.defaultValue) + ", " +
-            spec.describeRange() + (typed ? "; Ctrl+click to type a value)" : ")"));
-    if (changed) setParamValue(state, lane, info, spec, result);
+  for (const OptionSpec& spec : info.params) {
+    double value = paramValue(state, lane, info, spec);
+    if (optionWidget(spec.name.c_str(), spec, value)) setParamValue(state, lane, info, spec, value);
   }
 }
 
@@ -151,11 +97,8 @@ void samplingWidgets(ViewerState& state, const PanelStatus& status) {
         settings.filter = parseFilterType(filters[i]);
     ImGui::EndCombo();
   }
-  const auto& radius = setting::kFilterRadius;
-  ImGui::SliderFloat("filter radius", &settings.filterRadius, radius.minValue, radius.maxValue,
-                     settings.filterRadius > 0.0f ? "%.2f px" : "natural",
-                     ImGuiSliderFlags_AlwaysClamp);
-  tooltip(radius.help);
+  optionWidget("filter radius", setting::kFilterRadius, settings.filterRadius,
+               settings.filterRadius > 0.0f ? "%.2f px" : "natural");
   const std::vector<std::string> samplers = samplerTypeNames();
   const int sampler = static_cast<int>(settings.sampler);
   if (ImGui::BeginCombo("sampler", samplers[sampler].c_str())) {
@@ -166,16 +109,8 @@ void samplingWidgets(ViewerState& state, const PanelStatus& status) {
   }
   ImGui::InputScalar("seed", ImGuiDataType_U64, &settings.seed);
   tooltip(setting::kSeed.help);
-  const auto& spp = setting::kViewerSamplesPerPixel;
-  ImGui::DragScalar("spp target", ImGuiDataType_U32, &settings.samplesPerPixel, 8.0f, &spp.minValue,
-                    &spp.maxValue, "%u",
-                    ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
-  tooltip(spp.help);
-  const auto& perPass = setting::kSamplesPerPass;
-  ImGui::SliderScalar("spp per pass", ImGuiDataType_U32, &settings.samplesPerPass,
-                      &perPass.minValue, &perPass.maxValue, "%u",
-                      ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
-  tooltip(perPass.help);
+  optionWidget("spp target", kViewerSamplesPerPixel, settings.samplesPerPixel);
+  optionWidget("spp per pass", setting::kSamplesPerPass, settings.samplesPerPass);
   if (!status.fixedSize) {
     const char* resolutions[] = {"full", "1/2", "1/4"};
     int index = state.resolutionDivisor == 4 ? 2 : state.resolutionDivisor == 2 ? 1 : 0;
@@ -192,8 +127,7 @@ void displayWidgets(ViewerState& state, const PanelStatus& status) {
   ImGui::SameLine();
   ImGui::RadioButton("rays/sample", &mode, 2);
   state.display = static_cast<DisplayMode>(mode);
-  ImGui::SliderFloat("exposure", &state.exposure, setting::kExposure.minValue,
-                     setting::kExposure.maxValue, "%+.1f stops", ImGuiSliderFlags_AlwaysClamp);
+  optionWidget("exposure", setting::kExposure, state.exposure, "%+.1f stops");
   if (state.display != DisplayMode::Color) {
     const char* what = state.display == DisplayMode::Variance ? "variance" : "rays per sample";
     ImGui::PushTextWrapPos(0.0f);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "viewer/option_widget.h"
 #include "viewer/panel.h"
 
 namespace pathway {
@@ -172,11 +173,7 @@ bool errorPlotWidgets(ViewerState& state, const PanelStatus& status) {
         "Space, makes it faster). When it is done the panes start over, so the plot follows them "
         "from their first pass.");
   }
-  const auto& spp = setting::kReferenceSamplesPerPixel;
-  ImGui::DragScalar("reference spp", ImGuiDataType_U32, &state.referenceSpp, 8.0f, &spp.minValue,
-                    &spp.maxValue, "%u",
-                    ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
-  tooltip(spp.help);
+  optionWidget("reference spp", setting::kReferenceSamplesPerPixel, state.referenceSpp);
   ImGui::PushTextWrapPos(0.0f);
   if (!reference.error.empty()) ImGui::TextColored(kErrorColor, "%s", reference.error.c_str());
   if (reference.source.empty()) {

@@ -48,38 +48,31 @@ ReferenceImage loadReference(const std::string& path, const ReferenceView& view)
     if (!std::isfinite(pixel.x) || !std::isfinite(pixel.y) || !std::isfinite(pixel.z))
       throw PathwayError(path + ": the reference has non-finite pixel values");
   reference.source = path;
-  const auto integrator = loaded.metadata.find("pathway:integrator");
-  const auto spp = loaded.metadata.find("pathway:spp");
-  if (integrator != loaded.metadata.end() && spp != loaded.metadata.end())
-    reference.source += " (" + integrator->second + ", " + spp->second + " spp)";
+  const RenderMetadata& made = loaded.metadata;
+  if (!made.integrator.empty() && made.spp > 0)
+    reference.source += " (" + made.integrator + ", " + std::to_string(made.spp) + " spp)";
   reference.fromFile = true;
   reference.view = view;
   // A file from `pathway render` says which filter and random numbers made it.
-  const auto& metadata = loaded.metadata;
-  const auto filter = metadata.find("pathway:filter");
-  const auto radius = metadata.find("pathway:filterRadius");
-  const auto seed = metadata.find("pathway:seed");
-  const auto sampler = metadata.find("pathway:sampler");
-  try {
-    if (filter != metadata.end() && radius != metadata.end()) {
-      reference.view.filter = parseFilterType(filter->second);
-      reference.view.filterRadius = std::stof(radius->second);
-    }
-    if (seed != metadata.end()) reference.seed = std::stoull(seed->second);
-    const auto params = metadata.find("pathway:params");
-    if (integrator != metadata.end() && params != metadata.end()) {
-      // Parameters of an integrator this program does not have cannot be compared: left out.
-      const IntegratorInfo* info = nullptr;
-      for (const IntegratorInfo* known : allIntegrators())
-        if (known->name == integrator->second) info = known;
-      std::map<std::string, std::string> given;
-      std::istringstream words(params->second);
+  if (made.filter) {
+    reference.view.filter = *made.filter;
+    reference.view.filterRadius = made.filterRadius;
+  }
+  reference.seed = made.seed;
+  reference.sampler = made.sampler;
+  if (!made.integrator.empty() && !made.params.empty()) {
+    // Parameters of an integrator this program does not have cannot be compared: left out.
+    const IntegratorInfo* info = nullptr;
+    for (const IntegratorInfo* known : allIntegrators())
+      if (known->name == made.integrator) info = known;
+    std::map<std::string, std::string> given;
+    std::istringstream words(made.params);
+    try {
       for (std::string word; words >> word;) given.insert(splitParamAssignment(word));
       if (info) reference.view.params = resolveParams(info->name, info->params, given);
+    } catch (const std::exception& error) {
+      throw PathwayError(path + ": unreadable pathway metadata: " + error.what());
     }
-    if (sampler != metadata.end()) reference.sampler = parseSamplerType(sampler->second);
-  } catch (const std::exception& error) {
-    throw PathwayError(path + ": unreadable pathway metadata: " + error.what());
   }
   return reference;
 }

@@ -1,7 +1,7 @@
 // The image the error plot measures the panes against: loaded with `pathway view --reference`, or
 // made on demand (Make reference, key M). It holds for the view it was made at: another scene,
 // camera, pixel filter, image size or parameter that changes the expected image (an AO length, a
-// depth: ParamSpec::changesExpectedImage) makes the reference stale.
+// depth: OptionSpec::changesExpectedImage) makes the reference stale.
 #pragma once
 
 #include <cstdint>

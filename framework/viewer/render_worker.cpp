@@ -15,15 +15,6 @@ namespace {
 // display refreshes; the last pass before the worker rests is always published.
 constexpr std::chrono::milliseconds kPublishInterval{16};
 
-void mergeTodos(std::vector<TodoRecord>& into, const std::vector<TodoRecord>& hit) {
-  for (const TodoRecord& todo : hit) {
-    const bool known = std::any_of(into.begin(), into.end(), [&](const TodoRecord& t) {
-      return t.file == todo.file && t.line == todo.line;
-    });
-    if (!known) into.push_back(todo);
-  }
-}
-
 }  // namespace
 
 bool WorkerJob::operator==(const WorkerJob& o) const {
@@ -151,9 +142,7 @@ void RenderWorker::start(WorkerJob job, uint64_t id, Clock::time_point submitted
       const CameraPose& pose = job.camera;
       const Camera camera(pose.position, pose.lookAt, pose.up, pose.yfov, recipe.settings.width,
                           recipe.settings.height);
-      clearTodosHit();
       lane->session = std::make_unique<RenderSession>(*scene_->tracer, camera, recipe);
-      mergeTodos(lane->todos, todosHit());
     } catch (const std::exception& error) {
       lane->session.reset();
       lane->error = error.what();
@@ -186,9 +175,8 @@ void RenderWorker::renderPass(size_t index) {
   bool completed = false;
   passStart_ = Clock::now().time_since_epoch().count();
   try {
-    clearTodosHit();
     completed = lane.session->renderer().renderPass(&cancel_);
-    mergeTodos(lane.todos, todosHit());
+    lane.todos = lane.session->renderer().todos().records();
   } catch (const std::exception& error) {  // a stage that throws must not take the viewer down
     lane.error = error.what();
     lane.session.reset();
@@ -219,7 +207,7 @@ void RenderWorker::publish(size_t index) {
   frame->error = lane.error;
   if (lane.session) {
     const Renderer& renderer = lane.session->renderer();
-    RenderResult result = lane.session->develop(lane.todos);
+    RenderResult result = lane.session->develop();
     frame->params = lane.session->recipe().params;
     frame->earlierStages = lane.session->recipe().earlierStages;
     frame->settings = renderer.settings();

@@ -71,7 +71,7 @@ struct LaneFrame {
   double firstImageSeconds = 0.0;  // from submit() to this job's first image of this lane
   std::vector<TodoRecord> todos;   // unfinished stage code this lane ran
   std::string error;               // the lane could not render (refused parameters, ...)
-  ImageMetadata metadata;          // the "pathway:*" keys `pathway render` writes
+  RenderMetadata metadata;         // what `pathway render` writes with its images
 };
 
 class RenderWorker {

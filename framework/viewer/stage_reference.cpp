@@ -6,7 +6,7 @@
 namespace pathway {
 
 uint64_t referenceSeed(uint64_t seed) {
-  return seed + 7919;  // any fixed offset gives the reference samples of its own
+  return kReferenceSeed + seed;
 }
 
 const IntegratorInfo* stageReferenceOf(const std::string& integrator) {
@@ -38,11 +38,9 @@ std::optional<RenderResult> renderStageReference(
   const CameraPose& pose = frame.camera;
   const Camera camera(pose.position, pose.lookAt, pose.up, pose.yfov, recipe.settings.width,
                       recipe.settings.height);
-  // A session of its own, without runRender's clearing of the TODO log, which the render worker
-  // is reading for the shown pane at the same time.
   RenderSession session(*scene.tracer, camera, recipe);
   if (!session.renderer().renderAll(onPass, cancel)) return std::nullopt;
-  return session.develop({});
+  return session.develop();
 }
 
 }  // namespace pathway

@@ -88,7 +88,8 @@ int runViewerBenchmark(const ViewerOptions& given) {
   ViewerOptions options = given;
   if (options.width <= 0) options.width = 640;
   if (options.height <= 0) options.height = 360;
-  options.spp = setting::kViewerSamplesPerPixel.maxValue;  // never finishes while measured
+  options.spp =
+      static_cast<uint32_t>(kViewerSamplesPerPixel.maxValue);  // never finishes while measured
   std::vector<std::string> names;
   for (int stage : {1, 3, 5})
     if (findStageIntegrator(stage, Variant::Reference))

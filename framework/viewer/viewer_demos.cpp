@@ -84,7 +84,7 @@ void applyViewerDemo(const std::string& name, ViewerOptions& options) {
     options.display = demo.display;
     options.makeReference = options.makeReference || demo.makeReference;
     options.choices.filter = demo.filter.empty() ? filterTypeName(setting::kFilter) : demo.filter;
-    options.spp = demo.spp > 0 ? demo.spp : setting::kViewerSamplesPerPixel.defaultValue;
+    options.spp = demo.spp > 0 ? demo.spp : kViewerSamplesPerPixel.defaultAs<uint32_t>();
     return;
   }
   std::string known;

@@ -10,6 +10,11 @@
 
 namespace pathway {
 
+// The viewer refines a pane until it reaches this many samples per pixel: the render setting's
+// spp, with a far larger default (same range).
+inline const OptionSpec kViewerSamplesPerPixel =
+    setting::kSamplesPerPixel.withDefault(4096, "Samples per pixel at which rendering stops");
+
 struct ViewerOptions {
   RenderChoices choices;        // scene, integrator, parameters, sampler, seed, filter
   std::string splitIntegrator;  // non-empty: split view with this on the right
@@ -17,9 +22,9 @@ struct ViewerOptions {
   std::string balance = "time";  // split view: "time" or "rays"
   int windowWidth = 1280, windowHeight = 720;
   int width = 0, height = 0;  // render size; 0: follow the pane
-  uint32_t spp = setting::kViewerSamplesPerPixel.defaultValue;
-  uint32_t samplesPerPass = setting::kSamplesPerPass.defaultValue;
-  float exposure = setting::kExposure.defaultValue;
+  uint32_t spp = kViewerSamplesPerPixel.defaultAs<uint32_t>();
+  uint32_t samplesPerPass = setting::kSamplesPerPass.defaultAs<uint32_t>();
+  float exposure = setting::kExposure.defaultAs<float>();
   std::string display = "color";
   bool showHelp = false;  // open with the keys-and-mouse overlay
   bool headless = false;
@@ -27,7 +32,7 @@ struct ViewerOptions {
   std::string screenshot;  // written after the last frame
   bool grade = false;      // headless: grade the left pane once its first image is in (key G)
   std::string reference;   // an EXR the error plot measures the panes against
-  uint32_t referenceSpp = setting::kReferenceSamplesPerPixel.defaultValue;
+  uint32_t referenceSpp = setting::kReferenceSamplesPerPixel.defaultAs<uint32_t>();
   bool makeReference = false;  // headless: make the reference once the first image is in (key M)
   bool benchmark = false;
   double benchmarkSeconds = 3.0;

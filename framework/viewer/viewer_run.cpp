@@ -23,7 +23,7 @@ double now() {
 // Puts a checked recipe's integrator, parameters and earlier stages into pane `lane`.
 void applyRecipe(ViewerState& state, int lane, const RenderRecipe& recipe) {
   const IntegratorInfo& info = findIntegrator(recipe.integrator);
-  for (const ParamSpec& spec : info.params)
+  for (const OptionSpec& spec : info.params)
     setParamValue(state, lane, info, spec, recipe.params.number(spec.name));
   state.integrator[lane] = info.name;
   state.earlierStages[lane] = recipe.earlierStages;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "viewer/viewer_options.h"
+
 namespace pathway {
 namespace {
 
@@ -16,17 +18,17 @@ const IntegratorInfo* find(const std::string& name) {
 
 RenderSettings progressiveSettings() {
   RenderSettings settings;
-  settings.samplesPerPixel = setting::kViewerSamplesPerPixel.defaultValue;
+  settings.samplesPerPixel = kViewerSamplesPerPixel.defaultAs<uint32_t>();
   return settings;
 }
 
 double paramValue(const ViewerState& state, int lane, const IntegratorInfo& info,
-                  const ParamSpec& spec) {
+                  const OptionSpec& spec) {
   const auto it = state.params[lane].find({info.stage, spec.name});
   return it != state.params[lane].end() ? it->second : spec.defaultValue;
 }
 
-void setParamValue(ViewerState& state, int lane, const IntegratorInfo& info, const ParamSpec& spec,
+void setParamValue(ViewerState& state, int lane, const IntegratorInfo& info, const OptionSpec& spec,
                    double value) {
   ParamValues(info.params).set(info.name, spec.name, value);  // refuses what it does not accept
   state.params[lane][{info.stage, spec.name}] = value;
@@ -75,7 +77,7 @@ WorkerJob makeJob(const ViewerState& state, std::shared_ptr<const LoadedScene> s
     laneJob.integrator = state.integrator[lane];
     laneJob.earlierStages = state.earlierStages[lane];
     if (const IntegratorInfo* info = find(laneJob.integrator))
-      for (const ParamSpec& spec : info->params)
+      for (const OptionSpec& spec : info->params)
         laneJob.params[spec.name] = paramValue(state, lane, *info, spec);
     job.lanes.push_back(std::move(laneJob));
   }

@@ -23,7 +23,8 @@ namespace pathway {
 RenderSettings progressiveSettings();
 
 struct ViewerState {
-  std::string integrator[2] = {"stage1", "stage1"};  // left (or only) pane, right pane
+  std::string integrator[2] = {setting::kIntegrator,
+                               setting::kIntegrator};  // left (or only) pane, right pane
   EarlierStages earlierStages[2] = {EarlierStages::Own, EarlierStages::Own};
   // (stage, name) -> value, every value one the parameter accepts (the widgets and the command
   // line refuse others, nothing clamps).
@@ -41,7 +42,8 @@ struct ViewerState {
   float budgetSeconds = 0.0f;   // equal time: per pane; 0: up to the spp target
   float budgetMegaRays = 0.0f;  // equal rays: per pane, in millions; 0: up to the spp target
 
-  uint32_t referenceSpp = setting::kReferenceSamplesPerPixel.defaultValue;  // Make reference
+  uint32_t referenceSpp =
+      setting::kReferenceSamplesPerPixel.defaultAs<uint32_t>();  // Make reference
 
   bool paused = false;
   bool showHelp = false;
@@ -50,9 +52,9 @@ struct ViewerState {
 
 // The pane's value of a parameter: the one set for its stage, else the declared default.
 double paramValue(const ViewerState& state, int lane, const IntegratorInfo& info,
-                  const ParamSpec& spec);
+                  const OptionSpec& spec);
 // Throws PathwayError (naming the parameter and its range) for a value it does not accept.
-void setParamValue(ViewerState& state, int lane, const IntegratorInfo& info, const ParamSpec& spec,
+void setParamValue(ViewerState& state, int lane, const IntegratorInfo& info, const OptionSpec& spec,
                    double value);
 
 // Chooses an integrator for a pane; the left pane's choice also brings its stage's usual sampler.

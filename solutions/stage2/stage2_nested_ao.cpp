@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "render/stage_api.h"
+#include "stages/stage2.h"  // the stage's parameters: setup.params.<field>
 
 namespace pathway {
 namespace {
@@ -50,8 +51,8 @@ float ambientOcclusionSample(const RenderContext& context, const SurfaceHit& hit
 
 class NestedAmbientOcclusion : public Integrator {
  public:
-  explicit NestedAmbientOcclusion(const IntegratorSetup& setup)
-      : aoRays_(setup.params.integer("ao-rays")), aoDistance_(setup.params.real("ao-distance")) {}
+  explicit NestedAmbientOcclusion(const StageSetup<Stage2Params>& setup)
+      : aoRays_(setup.params.aoRays), aoDistance_(setup.params.aoDistance) {}
 
   Color Li(const Ray& cameraRay, SampleStream& samples,
            const RenderContext& context) const override {
@@ -73,7 +74,7 @@ class NestedAmbientOcclusion : public Integrator {
 
 // Stage 2 hands its hemisphere sampling and AO estimate on to stages 3-5.
 const bool registered = registerStage<NestedAmbientOcclusion>(
-    2, Stage2Functions{sampleCosineHemisphere, cosineHemispherePdf, ambientOcclusionSample});
+    stage2(), Stage2Functions{sampleCosineHemisphere, cosineHemispherePdf, ambientOcclusionSample});
 
 }  // namespace
 }  // namespace pathway

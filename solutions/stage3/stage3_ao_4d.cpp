@@ -8,14 +8,15 @@
 // coordinates are stratified jointly, which the nested version cannot do: at equal ray counts the
 // 4D estimate is less noisy, and there is one knob (samples per pixel) instead of two.
 #include "render/stage_api.h"
+#include "stages/stage3.h"  // the stage's parameters: setup.params.<field>
 
 namespace pathway {
 namespace {
 
 class AmbientOcclusion4D : public Integrator {
  public:
-  explicit AmbientOcclusion4D(const IntegratorSetup& setup)
-      : aoDistance_(setup.params.real("ao-distance")), stage2_(setup.kit.stage2()) {}
+  explicit AmbientOcclusion4D(const StageSetup<Stage3Params>& setup)
+      : aoDistance_(setup.params.aoDistance), stage2_(setup.kit.stage2()) {}
 
   Color Li(const Ray& cameraRay, SampleStream& samples,
            const RenderContext& context) const override {
@@ -41,7 +42,7 @@ class AmbientOcclusion4D : public Integrator {
   const Stage2Functions& stage2_;  // stage 2: cosine sampling and the AO estimate
 };
 
-const bool registered = registerStage<AmbientOcclusion4D>(3);
+const bool registered = registerStage<AmbientOcclusion4D>(stage3());
 
 }  // namespace
 }  // namespace pathway

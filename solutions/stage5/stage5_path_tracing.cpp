@@ -16,6 +16,7 @@
 #include <cmath>
 
 #include "render/stage_api.h"
+#include "stages/stage5.h"  // the stage's parameters: setup.params.<field>
 
 namespace pathway {
 namespace {
@@ -47,11 +48,11 @@ LightSample sampleLight(const EmitterPicker& lights, float uPick, Vec2 uPoint) {
 
 class PathTracer : public Integrator {
  public:
-  explicit PathTracer(const IntegratorSetup& setup)
-      : maxDepth_(setup.params.integer("max-depth")),
-        rouletteDepth_(setup.params.integer("rr-depth")),
-        nextEventEstimation_(setup.params.flag("nee")),
-        lights_(setup.scene, setup.params.choice("light-pick")),
+  explicit PathTracer(const StageSetup<Stage5Params>& setup)
+      : maxDepth_(setup.params.maxDepth),
+        rouletteDepth_(setup.params.rouletteDepth),
+        nextEventEstimation_(setup.params.nextEventEstimation),
+        lights_(setup.scene, setup.params.lightPick),
         stage2_(setup.kit.stage2()) {}
 
   // The path's weights. At every hit the reflected light ∫_Ω L(ω) · brdf · cos θ dω is
@@ -161,7 +162,7 @@ class PathTracer : public Integrator {
   const Stage2Functions& stage2_;  // stage 2: cosine-weighted directions
 };
 
-const bool registered = registerStage<PathTracer>(5);
+const bool registered = registerStage<PathTracer>(stage5());
 
 }  // namespace
 }  // namespace pathway

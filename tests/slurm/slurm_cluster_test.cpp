@@ -57,9 +57,10 @@ class SlurmCluster : public ::testing::Test {
       }
     // Only the order of the film's additions differs: equal to a float's rounding.
     EXPECT_LE(worst, 2.0 / (1 << 23));
-    for (const char* counter :
-         {"pathway:primaryRays", "pathway:secondaryRays", "pathway:shadowRays", "pathway:samples"})
-      EXPECT_EQ(merged.metadata.at(counter), single.metadata.at(counter)) << counter;
+    EXPECT_EQ(merged.metadata.primaryRays, single.metadata.primaryRays);
+    EXPECT_EQ(merged.metadata.secondaryRays, single.metadata.secondaryRays);
+    EXPECT_EQ(merged.metadata.shadowRays, single.metadata.shadowRays);
+    EXPECT_EQ(merged.metadata.samples, single.metadata.samples);
   }
 
   fs::path dir_;
