@@ -52,10 +52,10 @@
 //     uint32_t dimension() const;  // the dimension the next call hands out (or skips)
 //   };
 //
-// What a stage is built from (render/integrator_registry.h, render/parameters.h,
-// render/stage_kit.h): its constructor takes `const IntegratorSetup& setup`, with
-//   setup.params: int integer(const std::string& name) const; float real(...) const;
-//                 bool flag(...) const; const std::string& choice(...) const;
+// What a stage is built from (render/stage_definition.h, render/stage_kit.h): its constructor
+// takes `const StageSetup<StageNParams>& setup`, with
+//   setup.params: the stage's typed parameters, declared beside it in framework/stages/stageN.h
+//                 (e.g. setup.params.aoDistance; a misspelt name does not compile);
 //   setup.kit:    const Stage1Functions& stage1() const; const Stage2Functions& stage2() const;
 //   setup.scene:  const Scene& scene (for EmitterPicker).
 //   struct FilterProfiles {
@@ -82,7 +82,8 @@
 //
 // Picking an emitter for next-event estimation (render/emitter_picker.h, scene/emitters.h):
 //   class EmitterPicker {
-//     EmitterPicker(const Scene& scene, const std::string& weighting);  // "area" or "power"
+//     enum class EmitterWeighting { Area, Power };  // stage 5's params.lightPick
+//     EmitterPicker(const Scene& scene, EmitterWeighting weighting);
 //     struct Pick { const EmissiveTriangle* emitter; float probability; };  // of this triangle
 //     bool empty() const;        // no emitter can emit power
 //     Pick pick(float u) const;  // u in [0, 1); not to be called when empty()
@@ -111,9 +112,12 @@
 // Marking and registering (core/todo.h and below):
 //   PATHWAY_TODO("what to write");  // a statement: records that it ran (the stage is unfinished)
 //                                   // and prints its file and line once; it never stops
-//   template <typename IntegratorType> bool registerStage(int stage);
-//   template <typename IntegratorType> bool registerStage(int stage, const Stage1Functions&);
-//   template <typename IntegratorType> bool registerStage(int stage, const Stage2Functions&);
+//   // `stage`: the stage's declaration, stageN() from framework/stages/stageN.h
+//   template <typename IntegratorType> bool registerStage(const StageDefinition<P>& stage);
+//   template <typename IntegratorType> bool registerStage(const StageDefinition<P>& stage,
+//                                                         const Stage1Functions& handedOn);
+//   template <typename IntegratorType> bool registerStage(const StageDefinition<P>& stage,
+//                                                         const Stage2Functions& handedOn);
 //
 // Stage 4's ray budget is checked by the framework before rendering starts.
 #pragma once
