@@ -8,6 +8,7 @@
 #include <chrono>
 #include <fstream>
 
+#include "render/recipe_builder.h"
 #include "render/render_session.h"
 #include "sampling/pcg32.h"
 
@@ -63,14 +64,7 @@ RaySets makeRays(const Scene& scene, const RayTracer& tracer, int width, int hei
 namespace {
 
 RenderRecipe benchRecipe(const std::string& name, const Params& params, int width, uint32_t spp) {
-  const IntegratorInfo& info = findIntegrator(name);
-  RenderRecipe recipe;
-  recipe.integrator = name;
-  recipe.params = resolveParams(name, info.params, params);
-  recipe.settings.width = recipe.settings.height = width;
-  recipe.settings.samplesPerPixel = recipe.settings.samplesPerPass = spp;
-  recipe.settings.sampler = info.defaultSampler;
-  return recipe;
+  return RecipeBuilder(name).params(params).size(width, width).spp(spp);
 }
 
 }  // namespace

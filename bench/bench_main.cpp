@@ -24,6 +24,7 @@
 #include "ceiling.h"
 #include "core/error.h"
 #include "growth.h"
+#include "render/recipe_builder.h"
 #include "render/render_session.h"
 #include "render/render_settings.h"
 #include "scene/gltf_loader.h"
@@ -184,13 +185,11 @@ int benchStages(const std::string& scenePath, int width, int repeats) {
   }
 
   // The fixed workload: stage 5 at 256x256, 64 spp, 5 bounces, as the CLI runs it.
-  RenderRecipe recipe;
-  recipe.integrator = "stage5@ref";
-  recipe.params = resolveParams(recipe.integrator, findIntegrator(recipe.integrator).params,
-                                {{"max-depth", "5"}});
-  recipe.settings.width = recipe.settings.height = 256;
-  recipe.settings.samplesPerPixel = 64;
-  recipe.settings.samplesPerPass = 4;
+  const RenderRecipe recipe = RecipeBuilder("stage5@ref")
+                                  .param("max-depth", "5")
+                                  .size(256, 256)
+                                  .spp(64, 4)
+                                  .sampler(SamplerType::Independent);  // as measured since
   double wall = 0.0;
   RenderResult result;
   wall = secondsOf([&] { result = runRender(tracer, recipe); });

@@ -19,6 +19,7 @@
 
 #include "bench_kit.h"
 #include "core/child_process.h"
+#include "render/recipe_builder.h"
 #include "render/render_session.h"
 #include "sampling/pcg32.h"
 #include "scene/gltf_loader.h"
@@ -237,13 +238,8 @@ void benchSpp(const Scene& scene, const RayTracer& tracer, const GrowthOptions& 
   std::vector<std::string> fits;
   const Camera camera(scene, kSppSide, kSppSide);
   for (const char* integrator : {"stage3@ref", "stage5@ref"}) {
-    const IntegratorInfo& info = findIntegrator(integrator);
-    RenderRecipe recipe;
-    recipe.integrator = integrator;
-    recipe.params = resolveParams(integrator, info.params, {});
-    recipe.settings.width = recipe.settings.height = kSppSide;
+    RenderRecipe recipe = RecipeBuilder(integrator).size(kSppSide, kSppSide);
     recipe.settings.samplesPerPass = 1;  // as `pathway render` runs by default
-    recipe.settings.sampler = info.defaultSampler;
     // Every spp once per round, so that a busy moment of the machine bends no part of the curve
     // more than another.
     std::vector<double> spps(std::begin(sppValues), std::end(sppValues));

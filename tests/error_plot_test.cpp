@@ -17,6 +17,7 @@
 #include "core/error.h"
 #include "io/image_io.h"
 #include "render/integrator_registry.h"
+#include "render/recipe_builder.h"
 #include "run_command.h"
 #include "test_scenes.h"
 #include "viewer/reference_image.h"
@@ -244,15 +245,11 @@ class ErrorPlotRender : public ::testing::Test {
 
   // The frames the render worker would publish after `spps` samples per pixel, 1 per pass.
   std::vector<std::shared_ptr<const LaneFrame>> frames(std::vector<uint32_t> spps) const {
-    const IntegratorInfo& info = findIntegrator(kIntegrator);
-    RenderRecipe recipe;
-    recipe.integrator = info.name;
-    recipe.params = ParamValues(info.params);
-    recipe.settings.width = 24;
-    recipe.settings.height = 16;
-    recipe.settings.samplesPerPixel = spps.back();
-    recipe.settings.samplesPerPass = 1;
-    recipe.settings.seed = 3;
+    const RenderRecipe recipe = RecipeBuilder(kIntegrator)
+                                    .size(24, 16)
+                                    .spp(spps.back(), 1)
+                                    .sampler(SamplerType::Independent)
+                                    .seed(3);
     const CameraPose pose = OrbitCamera(scene_->scene).pose();
     const Camera camera(pose.position, pose.lookAt, pose.up, pose.yfov, recipe.settings.width,
                         recipe.settings.height);
@@ -265,7 +262,7 @@ class ErrorPlotRender : public ::testing::Test {
       frame->job = 1;
       frame->scenePath = scene_->scene.sourcePath;
       frame->camera = pose;
-      frame->integrator = info.name;
+      frame->integrator = session.integrator().name;
       frame->params = session.recipe().params;
       frame->settings = session.renderer().settings();
       frame->images = std::move(developed.images);

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "film/pixel_filter.h"
+#include "render/recipe_builder.h"
 #include "render/render_session.h"
 #include "stage_under_test.h"
 #include "test_scenes.h"
@@ -63,13 +64,8 @@ TEST(Film, ConstantSceneComesBackExactlyForEveryFilterAndSampleCount) {
   for (FilterType type :
        {FilterType::Box, FilterType::Tent, FilterType::MitchellNetravali, FilterType::Gaussian}) {
     for (uint32_t spp : {1u, 2u, 4u}) {
-      RenderRecipe recipe;
-      recipe.integrator = test::stage(1);
-      recipe.settings.width = 48;
-      recipe.settings.height = 32;
-      recipe.settings.samplesPerPixel = spp;
-      recipe.settings.filter = type;
-      recipe.settings.seed = 7;
+      const RenderRecipe recipe =
+          RecipeBuilder(test::stage(1)).size(48, 32).spp(spp, 1).filter(type).seed(7);
       const RenderResult result = runRender(tracer, recipe);
       size_t zeroPixels = 0;
       for (const Color& pixel : result.images.color.pixels) {

@@ -1,24 +1,20 @@
 #include "render_helpers.h"
 
+#include "render/recipe_builder.h"
 #include "scene/ray_tracer.h"
 
 namespace pathway::test {
 
 RenderResult render(const Scene& scene, const RenderSpec& spec) {
   const RayTracer tracer(scene);
-  const IntegratorInfo& info = findIntegrator(spec.integrator);
-  RenderRecipe recipe;
-  recipe.integrator = info.name;
-  recipe.params = resolveParams(info.name, info.params, spec.params);
-  recipe.earlierStages = spec.earlierStages;
-  recipe.settings.width = spec.width;
-  recipe.settings.height = spec.height;
-  recipe.settings.samplesPerPixel = spec.spp;
-  recipe.settings.samplesPerPass = spec.spp;
-  recipe.settings.sampler = spec.sampler;
-  recipe.settings.seed = spec.seed;
-  recipe.settings.filter = FilterType::Box;
-  return runRender(tracer, recipe);
+  return runRender(tracer, RecipeBuilder(spec.integrator)
+                               .params(spec.params)
+                               .earlierStages(spec.earlierStages)
+                               .size(spec.width, spec.height)
+                               .spp(spec.spp)
+                               .sampler(spec.sampler)
+                               .seed(spec.seed)
+                               .filter(FilterType::Box));
 }
 
 Estimate meanOverPixels(const RenderResult& result, int channel,

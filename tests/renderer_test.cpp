@@ -8,6 +8,7 @@
 #include <numeric>
 #include <thread>
 
+#include "render/recipe_builder.h"
 #include "render/render_session.h"
 #include "scene/gltf_loader.h"
 #include "stage_under_test.h"
@@ -17,17 +18,13 @@ namespace pathway {
 namespace {
 
 RenderRecipe smallRecipe(int threads, SamplerType sampler) {
-  RenderRecipe recipe;
-  recipe.integrator = test::stage(1);
-  recipe.settings.width = 70;  // not a multiple of the tile size, on purpose
-  recipe.settings.height = 45;
-  recipe.settings.samplesPerPixel = 4;
-  recipe.settings.samplesPerPass = 2;
-  recipe.settings.filter = FilterType::MitchellNetravali;
-  recipe.settings.sampler = sampler;
-  recipe.settings.seed = 11;
-  recipe.settings.threads = threads;
-  return recipe;
+  return RecipeBuilder(test::stage(1))
+      .size(70, 45)  // not a multiple of the tile size, on purpose
+      .spp(4, 2)
+      .filter(FilterType::MitchellNetravali)
+      .sampler(sampler)
+      .seed(11)
+      .threads(threads);
 }
 
 // An integrator of the stage under test at its default parameters.

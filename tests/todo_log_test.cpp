@@ -5,6 +5,7 @@
 
 #include <thread>
 
+#include "render/recipe_builder.h"
 #include "render/render_session.h"
 #include "scene/gltf_loader.h"
 #include "stage_under_test.h"
@@ -40,12 +41,7 @@ const bool kRegistered = registerIntegrator(maybeUnfinished("todo-test-unfinishe
                          registerIntegrator(maybeUnfinished("todo-test-finished", false));
 
 RenderRecipe recipeOf(const std::string& integrator) {
-  RenderRecipe recipe;
-  recipe.integrator = integrator;
-  recipe.settings.width = recipe.settings.height = 48;
-  recipe.settings.samplesPerPixel = 64;
-  recipe.settings.samplesPerPass = 1;  // many passes: the two renders interleave
-  return recipe;
+  return RecipeBuilder(integrator).size(48, 48).spp(64, 1);  // many passes: renders interleave
 }
 
 TEST(TodoLog, RendersSideBySideKeepTheirOwn) {

@@ -185,15 +185,12 @@ ChartData runChart(const ChartSpec& spec, const ChartRunOptions& options) {
   }
 
   auto recipeOf = [&](const ChartConfig& config, uint32_t spp, uint64_t seed) {
-    RenderRecipe recipe = config.choices.recipe();
     const ChartScene& scene = scenes.at(spec.sceneOf(config));
-    recipe.settings.width = scene.width;
-    recipe.settings.height = scene.height;
-    recipe.settings.samplesPerPixel = spp;
-    recipe.settings.samplesPerPass = samplesPerProgressPass(spp);
-    recipe.settings.seed = seed;
-    recipe.settings.threads = options.threads;
-    return recipe;
+    return RenderRecipe(config.choices.builder()
+                            .size(scene.width, scene.height)
+                            .spp(spp, samplesPerProgressPass(spp))
+                            .seed(seed)
+                            .threads(options.threads));
   };
   auto keyOf = [&](const ChartConfig& config, const RenderRecipe& recipe,
                    const std::string& referenceKey) {

@@ -1,6 +1,7 @@
 #include "grade/grading_cases.h"
 
 #include "core/error.h"
+#include "render/recipe_builder.h"
 #include "render/reference_library.h"
 
 namespace pathway {
@@ -151,22 +152,17 @@ RenderRecipe GradingCase::recipe(Variant variant, EarlierStages earlier, uint64_
                            ? referenceStageMissing(stage)
                            : "the student stage " + std::to_string(stage) +
                                  " is not built into this program");
-  RenderRecipe recipe;
-  recipe.integrator = info->name;
-  recipe.params = resolveParams(info->name, info->params, params);
-  recipe.earlierStages = earlier;
-  RenderSettings& s = recipe.settings;
-  s.width = width;
-  s.height = height;
-  s.samplesPerPixel = s.samplesPerPass = spp;
   // Independent samples unless the case is about Sobol' (stage 3): with them, any valid order in
   // which a student takes dimensions has the variance the reference predicts. (Stage 5 renders
   // with Sobol' by default; its grading cases do not.)
-  s.sampler = sobol ? SamplerType::Sobol : SamplerType::Independent;
-  s.seed = seed;
-  s.filter = filter;
-  s.filterRadius = filterRadius;
-  return recipe;
+  return RecipeBuilder(*info)
+      .params(params)
+      .earlierStages(earlier)
+      .size(width, height)
+      .spp(spp)
+      .sampler(sobol ? SamplerType::Sobol : SamplerType::Independent)
+      .seed(seed)
+      .filter(filter, filterRadius);
 }
 
 const std::vector<GradingCase>& gradingCases() {

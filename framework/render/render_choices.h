@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "render/render_session.h"
+#include "render/recipe_builder.h"
 
 namespace pathway {
 
@@ -24,6 +24,7 @@ struct RenderChoices {
   // The recipe these choices describe: integrator, parameters, earlier stages, sampler, seed and
   // filter (the other settings keep their defaults). Throws PathwayError naming the first unknown
   // name or refused parameter value; the settings' ranges are checked when the render starts.
+  RecipeBuilder builder() const;  // to set more (size, spp, ...)
   RenderRecipe recipe() const;
 };
 

@@ -18,11 +18,11 @@
 
 namespace pathway {
 
-// Everything that decides an image besides the scene and the camera.
+// Everything that decides an image besides the scene and the camera. Made by RecipeBuilder
+// (render/recipe_builder.h), which fills in the integrator's defaults and checks names.
 struct RenderRecipe {
   std::string integrator = setting::kIntegrator;
-  // The integrator's parameter values (from resolveParams or ParamValues::set, which refuse
-  // values out of range); left empty, every parameter takes its declared default.
+  // The integrator's parameter values; left empty, every parameter takes its declared default.
   ParamValues params;
   EarlierStages earlierStages = EarlierStages::Own;
   RenderSettings settings;

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "render/integrator_registry.h"
+#include "render/recipe_builder.h"
 #include "scene/camera.h"
 
 namespace pathway {
@@ -131,14 +132,11 @@ void RenderWorker::start(WorkerJob job, uint64_t id, Clock::time_point submitted
     lane->integrator = laneJob.integrator;
     try {
       if (!scene_) throw PathwayError("no scene is loaded");
-      const IntegratorInfo& info = findIntegrator(laneJob.integrator);
-      RenderRecipe recipe;
-      recipe.integrator = info.name;
-      recipe.params = ParamValues(info.params);
+      RecipeBuilder builder(laneJob.integrator);
       // The panel's widgets only produce values the parameters accept; anything else is refused.
-      for (const auto& [name, value] : laneJob.params) recipe.params.set(info.name, name, value);
-      recipe.earlierStages = laneJob.earlierStages;
-      recipe.settings = job.settings;
+      for (const auto& [name, value] : laneJob.params) builder.param(name, value);
+      const RenderRecipe& recipe =
+          builder.earlierStages(laneJob.earlierStages).settings(job.settings);
       const CameraPose& pose = job.camera;
       const Camera camera(pose.position, pose.lookAt, pose.up, pose.yfov, recipe.settings.width,
                           recipe.settings.height);

@@ -1,6 +1,7 @@
 #include "viewer/stage_reference.h"
 
 #include "core/error.h"
+#include "render/recipe_builder.h"
 #include "render/reference_library.h"
 
 namespace pathway {
@@ -28,13 +29,12 @@ std::optional<RenderResult> renderStageReference(
     const std::function<void(const RenderStats&)>& onPass, const std::atomic<bool>* cancel) {
   const IntegratorInfo* reference = stageReferenceOf(frame.integrator);
   if (!reference) throw PathwayError(missingReferenceOf(frame.integrator));
-  RenderRecipe recipe;
-  recipe.integrator = reference->name;
-  recipe.params = frame.params;  // the stage's parameters are declared once, for both variants
-  recipe.settings = frame.settings;
-  recipe.settings.samplesPerPixel = spp;
-  recipe.settings.samplesPerPass = samplesPerPass;
-  recipe.settings.seed = referenceSeed(frame.settings.seed);
+  // The stage's parameters are declared once, for both variants.
+  const RenderRecipe recipe = RecipeBuilder(*reference)
+                                  .params(frame.params)
+                                  .settings(frame.settings)
+                                  .spp(spp, samplesPerPass)
+                                  .seed(referenceSeed(frame.settings.seed));
   const CameraPose& pose = frame.camera;
   const Camera camera(pose.position, pose.lookAt, pose.up, pose.yfov, recipe.settings.width,
                       recipe.settings.height);
