@@ -55,10 +55,6 @@ struct GradeOptions {
   int calibrate = 0;                     // > 0: grade this many seeds per case, in this process
   std::vector<uint32_t> calibrationSpp;  // empty: each case's own
   bool quiet = false;
-  // A child's work: these cases, each within its limit in seconds, into this folder.
-  std::vector<std::string> renderCases;
-  std::vector<double> renderLimits;
-  std::string renderOutput;
 };
 
 std::vector<const GradingCase*> selectedCases(const GradeOptions& options) {
@@ -219,18 +215,12 @@ void listCases() {
 }
 
 int run(const GradeOptions& options) {
-  const bool writesReport = options.renderCases.empty() && !options.makeReferences &&
-                            options.calibrate == 0 && options.submissions.empty() &&
-                            options.submission.empty() && !options.listCases;
+  const bool writesReport = !options.makeReferences && options.calibrate == 0 &&
+                            options.submissions.empty() && options.submission.empty() &&
+                            !options.listCases;
   if (writesReport) checkReportFolder(options.report);  // before any work, not after it
   if (options.listCases) {
     listCases();
-    return 0;
-  }
-  if (!options.renderCases.empty()) {
-    std::vector<const GradingCase*> cases;
-    for (const std::string& id : options.renderCases) cases.push_back(&findGradingCase(id));
-    renderGradingCases(cases, options.renderLimits, gradingRun(options), options.renderOutput);
     return 0;
   }
   if (options.makeReferences) return makeReferences(options);
@@ -335,9 +325,6 @@ Command addGradeCommand(CLI::App& app) {
                    "With --calibrate: these spp instead of each case's (references made first)")
       ->check(CLI::Range(1u, 1u << 16));
   grade->add_flag("-q,--quiet", options->quiet, "No progress or summary");
-  grade->add_option("--render-case", options->renderCases)->group("");  // a child's work
-  grade->add_option("--render-limit", options->renderLimits)->group("");
-  grade->add_option("--render-output", options->renderOutput)->group("");
   return {grade, [options] { return run(*options); }};
 }
 
