@@ -12,6 +12,7 @@
 #include "app/commands.h"
 #include "app/shared_options.h"
 #include "cluster/cluster_job.h"
+#include "cluster/command_lines.h"
 #include "core/child_process.h"
 #include "core/error.h"
 #include "grade/class_grading.h"
@@ -97,6 +98,14 @@ std::string quoted(const std::vector<std::string>& words) {
   return line;
 }
 
+// The whole command line of `command` (cluster/command_lines.h), run by this program.
+template <typename PathwayCommand>
+std::vector<std::string> commandLine(const PathwayCommand& command) {
+  std::vector<std::string> words = command.toArguments();
+  words.insert(words.begin(), currentExecutable());
+  return words;
+}
+
 // Runs `check` (a command that only checks what every task will be given) once, here: when the
 // `command` options `passedOn` are refused, nothing is submitted and its message says why.
 void checkBeforeSubmitting(const std::vector<std::string>& check, const fs::path& work,
@@ -134,7 +143,6 @@ int runClusterRender(const ClusterRenderOptions& options) {
   if (tasks > options.spp)
     throw PathwayError("--tasks " + std::to_string(tasks) + " is more than the " +
                        std::to_string(options.spp) + " samples to split");
-  const std::string pathway = currentExecutable();
   const fs::path first(options.outputs.front());
   const fs::path work =
       fs::absolute(options.job.workDir.empty()
@@ -145,41 +153,40 @@ int runClusterRender(const ClusterRenderOptions& options) {
   fs::create_directories(work / "logs");
 
   // Every task gets the same render: check it here once, before anything is submitted.
-  std::vector<std::string> base = {pathway, "render"};
-  base.insert(base.end(), options.renderArguments.begin(), options.renderArguments.end());
-  const SchedulerOptions scheduler = schedulerOptions(options.job);
-  const std::string threads = std::to_string(scheduler.cpusPerTask);
-  std::vector<std::string> check = base;
-  check.insert(check.end(), {"--spp", std::to_string(options.spp), "--samples",
-                             "0:" + std::to_string(options.spp), "--check", "-o",
-                             (work / "parts/check.exr").string()});
-  checkBeforeSubmitting(check, work, "render", options.renderArguments);
+  RenderPartCommand check;
+  check.renderArguments = options.renderArguments;
+  check.spp = options.spp;
+  check.sampleEnd = options.spp;
+  check.checkOnly = true;
+  check.output = (work / "parts/check.exr").string();
+  checkBeforeSubmitting(commandLine(check), work, "render", options.renderArguments);
 
+  const SchedulerOptions scheduler = schedulerOptions(options.job);
   ClusterJob job;
   job.name = "pathway-render";
   job.folder = work.string();
-  std::vector<std::string> finish = {pathway, "merge", "-q", "--exposure",
-                                     std::to_string(options.exposure)};
+  MergeCommand merge;
+  merge.quiet = true;
+  merge.exposure = options.exposure;
   std::vector<std::string> ranges;  // of each task
   for (uint32_t i = 0; i < tasks; ++i) {
-    const uint32_t begin = static_cast<uint32_t>(uint64_t(options.spp) * i / tasks);
-    const uint32_t end = static_cast<uint32_t>(uint64_t(options.spp) * (i + 1) / tasks);
+    RenderPartCommand part;
+    part.renderArguments = options.renderArguments;
+    part.spp = options.spp;
+    part.sampleBegin = static_cast<uint32_t>(uint64_t(options.spp) * i / tasks);
+    part.sampleEnd = static_cast<uint32_t>(uint64_t(options.spp) * (i + 1) / tasks);
+    part.threads = scheduler.cpusPerTask;
+    part.quiet = true;
     char name[32];
     std::snprintf(name, sizeof name, "part-%04u.exr", i);
-    const std::string part = (work / "parts" / name).string();
-    std::vector<std::string> line = base;
-    line.insert(line.end(), {"--spp", std::to_string(options.spp), "--samples",
-                             std::to_string(begin) + ":" + std::to_string(end), "--threads",
-                             threads, "-q", "-o", part});
-    job.tasks.push_back({quoted(line)});
-    finish.push_back(part);
-    ranges.push_back(std::to_string(begin) + ":" + std::to_string(end));
+    part.output = (work / "parts" / name).string();
+    job.tasks.push_back({quoted(commandLine(part))});
+    merge.parts.push_back(part.output);
+    ranges.push_back(std::to_string(part.sampleBegin) + ":" + std::to_string(part.sampleEnd));
   }
-  for (const std::string& output : options.outputs) {
-    finish.push_back("-o");
-    finish.push_back(fs::absolute(output).string());
-  }
-  job.finish = {quoted(finish)};
+  for (const std::string& output : options.outputs)
+    merge.outputs.push_back(fs::absolute(output).string());
+  job.finish = {quoted(commandLine(merge))};
 
   const JobOutcome outcome = runClusterJob(job, scheduler);
   printRetried(outcome);
@@ -206,16 +213,15 @@ int runClusterRender(const ClusterRenderOptions& options) {
 int runClusterGrade(const ClusterGradeOptions& options) {
   const std::vector<std::string> folders = submissionFolders(options.submissions);
   const size_t tasks = std::min<size_t>(options.job.tasks, folders.size());
-  const std::string pathway = currentExecutable();
   const fs::path output = fs::absolute(options.output).lexically_normal();
   const fs::path work =
       options.job.workDir.empty() ? output / "cluster" : fs::absolute(options.job.workDir);
   fs::create_directories(work / "logs");
 
   // Every submission gets the same grade options: check them once, before anything is submitted.
-  std::vector<std::string> check = {pathway, "grade", "--list-cases"};
-  check.insert(check.end(), options.gradeArguments.begin(), options.gradeArguments.end());
-  checkBeforeSubmitting(check, work, "grade", options.gradeArguments);
+  GradeOptionsCheckCommand check;
+  check.gradeArguments = options.gradeArguments;
+  checkBeforeSubmitting(commandLine(check), work, "grade", options.gradeArguments);
 
   ClusterJob job;
   job.name = "pathway-grade";
@@ -224,25 +230,24 @@ int runClusterGrade(const ClusterGradeOptions& options) {
     std::vector<std::string> lines;
     for (size_t k = folders.size() * i / tasks; k < folders.size() * (i + 1) / tasks; ++k) {
       const fs::path folder = fs::absolute(folders[k]);
-      std::vector<std::string> grade = {pathway,
-                                        "grade",
-                                        "-q",
-                                        "--submission",
-                                        folder.string(),
-                                        "--output",
-                                        (output / folder.filename()).string()};
-      grade.insert(grade.end(), options.gradeArguments.begin(), options.gradeArguments.end());
+      SubmissionGradeCommand grade;
+      grade.quiet = true;
+      grade.submission = folder.string();
+      grade.output = (output / folder.filename()).string();
+      grade.gradeArguments = options.gradeArguments;
       // A grader that ends with points lost still writes the submission's row: a verdict. With
       // no fresh row (the row of an earlier run removed first) the task failed.
       const std::string row = shellQuote((output / folder.filename() / "submission.tsv").string());
       lines.push_back("rm -f " + row);
-      lines.push_back(quoted(grade) + " || test -f " + row);
+      lines.push_back(quoted(commandLine(grade)) + " || test -f " + row);
     }
     job.tasks.push_back(lines);
   }
-  job.finish = {
-      quoted({pathway, "grade", "-q", "--submissions", fs::absolute(options.submissions).string(),
-              "--output", output.string(), "--table-only"})};
+  ClassTableCommand table;
+  table.quiet = true;
+  table.submissions = fs::absolute(options.submissions).string();
+  table.output = output.string();
+  job.finish = {quoted(commandLine(table))};
 
   const JobOutcome outcome = runClusterJob(job, schedulerOptions(options.job));
   printRetried(outcome);

@@ -7,6 +7,7 @@
 
 #include "app/commands.h"
 #include "core/error.h"
+#include "grade/case_render_job.h"
 #include "render/reference_library.h"
 
 int main(int argc, char** argv) {
@@ -15,6 +16,7 @@ int main(int argc, char** argv) {
   std::vector<pathway::Command> commands = {
       pathway::addRenderCommand(app), pathway::addGradeCommand(app), pathway::addChartCommand(app),
       pathway::addMergeCommand(app), pathway::addClusterCommand(app)};
+  commands.push_back(pathway::addCaseRenderCommand(app));  // hidden: the grader's child
   const pathway::Command reference = pathway::addReferenceCommand(app);
   commands.push_back(reference);
 #ifdef PATHWAY_HAS_VIEWER
@@ -29,6 +31,11 @@ int main(int argc, char** argv) {
       pathway::passedOnArguments().assign(argv + i + 1, argv + argc);
       break;
     }
+  // The grader's child reads its command line itself (grade/case_render_job.h).
+  if (argc > 1 && std::string(argv[1]) == pathway::CaseRenderJob::kCommand) {
+    parsed = 2;
+    pathway::unparsedArguments().assign(argv + 1, argv + argc);
+  }
   try {
     app.parse(parsed, argv);
   } catch (const CLI::ParseError& error) {

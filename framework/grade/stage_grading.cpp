@@ -1,7 +1,5 @@
 #include "grade/stage_grading.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -16,10 +14,9 @@
 #include "core/child_process.h"
 #include "core/error.h"
 #include "core/temporary_folder.h"
+#include "grade/case_render_job.h"
 #include "grade/reference_comparison.h"
 #include "render/pixel_in_progress.h"
-#include "render/stage_library.h"
-#include "scene/gltf_loader.h"
 
 namespace pathway {
 namespace {
@@ -68,28 +65,33 @@ std::string stopMessage(const ChildOutcome& child, const GradingCase& gradingCas
 // first; this only catches a stage that blocks SIGALRM.
 constexpr double kChildGraceSeconds = 10.0;
 
-// Renders `cases` (with their limits) with `seed` in as few child processes as crashes and hangs
-// allow: one child renders them all in order; when it stops early, the case it was on fails and
-// the cases after it go to a new child.
-std::vector<RenderOutcome> renderInChildren(const std::vector<const GradingCase*>& cases,
-                                            const std::vector<double>& limits,
+// Renders `cases` (each within its limit) with `seed` in as few child processes as crashes and
+// hangs allow: one child renders them all in order; when it stops early, the case it was on fails
+// and the cases after it go to a new child.
+std::vector<RenderOutcome> renderInChildren(const std::vector<CaseRenderJob::Case>& cases,
                                             const GradingRun& run, uint64_t seed,
                                             const std::string& workFolder) {
   std::vector<RenderOutcome> outcomes(cases.size());
-  GradingRun once = run;
-  once.seed = seed;
+  CaseRenderJob job;
+  job.output = workFolder;
+  job.scenes = run.scenes;
+  job.seed = seed;
+  job.together = run.together;
+  job.gradeReference = run.gradeReference;
+  for (const std::string& library : run.stageLibraries)
+    job.stageLibraries.push_back(fs::absolute(library).string());
   for (size_t next = 0; next < cases.size();) {
-    const std::vector<const GradingCase*> batch(cases.begin() + next, cases.end());
-    const std::vector<double> batchLimits(limits.begin() + next, limits.end());
+    job.cases.assign(cases.begin() + next, cases.end());
     double total = kChildGraceSeconds;
-    for (double limit : batchLimits) total += limit;
+    for (const CaseRenderJob::Case& c : job.cases) total += c.timeLimit;
     const std::string log =
-        workFolder + "/" + batch.front()->id() + "-" + std::to_string(seed) + ".log";
-    ChildOutcome child =
-        runChild(renderCaseArguments(batch, batchLimits, once, workFolder), total, log);
+        workFolder + "/" + cases[next].gradingCase->id() + "-" + std::to_string(seed) + ".log";
+    std::vector<std::string> command = {currentExecutable()};
+    for (const std::string& argument : job.toArguments()) command.push_back(argument);
+    ChildOutcome child = runChild(command, total, log);
     // Images are written whole or not at all (image_io.h): each one there is a finished case.
     for (; next < cases.size(); ++next) {
-      const std::string image = caseOutput(workFolder, *cases[next], seed);
+      const std::string image = job.imagePath(*cases[next].gradingCase);
       if (!fs::exists(image)) break;
       try {
         outcomes[next].image = readImageFile(image);
@@ -106,7 +108,7 @@ std::vector<RenderOutcome> renderInChildren(const std::vector<const GradingCase*
     RenderOutcome& failed = outcomes[next];
     failed.crashed = child.signal != 0;
     failed.timedOut = child.timedOut;
-    failed.problem = stopMessage(child, *cases[next], limits[next]);
+    failed.problem = stopMessage(child, *cases[next].gradingCase, cases[next].timeLimit);
     ++next;
   }
   return outcomes;
@@ -148,7 +150,7 @@ void gradeCase(CaseResult& result, const GradingCase& gradingCase, const Grading
       // fails again. So a failure counts only when a render with another seed fails too.
       const uint64_t seed = run.seed + kConfirmationSeedOffset;
       const RenderOutcome again =
-          renderInChildren({&gradingCase}, {limit}, run, seed, workFolder).front();
+          renderInChildren({{&gradingCase, limit}}, run, seed, workFolder).front();
       if (!again.image) return takeProblem(result, again);
       CaseResult second = result;
       judgeAgainstReference(second, *again.image, reference, settings);
@@ -165,60 +167,6 @@ void gradeCase(CaseResult& result, const GradingCase& gradingCase, const Grading
 }
 
 }  // namespace
-
-std::string caseOutput(const std::string& folder, const GradingCase& gradingCase, uint64_t seed) {
-  return folder + "/" + gradingCase.id() + "-" + std::to_string(seed) + ".exr";
-}
-
-std::vector<std::string> renderCaseArguments(const std::vector<const GradingCase*>& cases,
-                                             const std::vector<double>& limits,
-                                             const GradingRun& run, const std::string& folder) {
-  // `pathway grade` reads these (framework/app/grade_command.cpp).
-  std::vector<std::string> arguments = {
-      currentExecutable(), "grade", "--render-output", folder, "--seed", std::to_string(run.seed)};
-  for (size_t i = 0; i < cases.size(); ++i) {
-    arguments.insert(arguments.end(), {"--render-case", cases[i]->id()});
-    arguments.insert(arguments.end(), {"--render-limit", std::to_string(limits[i])});
-  }
-  if (run.together) arguments.push_back("--together");
-  if (run.gradeReference) arguments.push_back("--grade-reference");
-  for (const std::string& library : run.stageLibraries) {
-    arguments.push_back("--stages-library");
-    arguments.push_back(fs::absolute(library).string());
-  }
-  return arguments;
-}
-
-void renderGradingCases(const std::vector<const GradingCase*>& cases,
-                        const std::vector<double>& limits, const GradingRun& run,
-                        const std::string& folder) {
-  limitThisChild(64ull << 20);  // a render and its log need far less than 64 MiB
-  reportPixelsOnFatalSignals();
-  if (limits.size() != cases.size())
-    throw PathwayError("internal: " + std::to_string(cases.size()) + " cases but " +
-                       std::to_string(limits.size()) + " time limits");
-  std::vector<int> registeredStages;
-  for (const std::string& library : run.stageLibraries)
-    for (int stage : loadStageLibrary(library)) registeredStages.push_back(stage);
-  for (size_t i = 0; i < cases.size(); ++i) {
-    const GradingCase& gradingCase = *cases[i];
-    // The case's own deadline: past it, SIGALRM ends this process (its default action).
-    alarm(static_cast<unsigned>(std::ceil(limits[i])));
-    if (!run.stageLibraries.empty() && std::find(registeredStages.begin(), registeredStages.end(),
-                                                 gradingCase.stage) == registeredStages.end())
-      throw PathwayError("no stage library given registers stage " +
-                         std::to_string(gradingCase.stage) +
-                         " (does its file end with its registerStage line?)");
-    const RenderRecipe recipe =
-        gradingCase.recipe(run.gradeReference ? Variant::Reference : Variant::Student,
-                           run.together ? EarlierStages::Own : EarlierStages::Reference, run.seed);
-    const Scene scene = loadScene(run.scenes + "/" + gradingCase.scene);
-    const RayTracer tracer(scene);
-    const RenderResult result = runRender(tracer, recipe);
-    writeExr(caseOutput(folder, gradingCase, run.seed), result.images, result.metadata);
-  }
-  alarm(0);
-}
 
 void judgeAgainstReference(CaseResult& result, const LoadedImage& render,
                            const GradingReference& reference, const ComparisonSettings& settings) {
@@ -276,15 +224,13 @@ GradeSummary gradeStages(const GradingRun& run, const ComparisonSettings& settin
     while (end < run.cases.size() && run.cases[end]->stage == run.cases[first]->stage) ++end;
     std::vector<CaseResult> results;
     std::vector<std::optional<GradingReference>> references;
-    std::vector<const GradingCase*> toRender;
-    std::vector<double> limits;
+    std::vector<CaseRenderJob::Case> toRender;
     for (size_t i = first; i < end; ++i) {
       results.push_back(caseHeader(*run.cases[i]));
       try {
         references.push_back(
             readGradingReference(run.references + "/" + run.cases[i]->referenceFile()));
-        toRender.push_back(run.cases[i]);
-        limits.push_back(caseLimit(run, *references.back()));
+        toRender.push_back({run.cases[i], caseLimit(run, *references.back())});
       } catch (const std::exception& error) {
         references.emplace_back();
         results.back().problem = error.what();
@@ -294,12 +240,12 @@ GradeSummary gradeStages(const GradingRun& run, const ComparisonSettings& settin
       std::fprintf(stderr, "grading stage %d: %zu cases ...\n", run.cases[first]->stage,
                    end - first);
     const std::vector<RenderOutcome> outcomes =
-        renderInChildren(toRender, limits, run, run.seed, work.path());
+        renderInChildren(toRender, run, run.seed, work.path());
     for (size_t i = first, rendered = 0; i < end; ++i) {
       CaseResult& result = results[i - first];
       if (const auto& reference = references[i - first]) {
-        gradeCase(result, *run.cases[i], run, *reference, limits[rendered], outcomes[rendered],
-                  work.path(), settings);
+        gradeCase(result, *run.cases[i], run, *reference, toRender[rendered].timeLimit,
+                  outcomes[rendered], work.path(), settings);
         ++rendered;
       }
       result.maxPoints =

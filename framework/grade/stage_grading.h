@@ -1,7 +1,7 @@
-// Grading stages on their cases: a stage's cases render in a child process of this program
-// (`pathway grade --render-case`), one after another, each with its own time limit, so that a
-// stage that crashes or hangs fails that case and nothing else (the cases after it render in a
-// new child); this process reads the renders back and compares them with the references.
+// Grading stages on their cases: a stage's cases render in a child process of this program (a
+// CaseRenderJob, grade/case_render_job.h), one after another, each with its own time limit, so
+// that a stage that crashes or hangs fails that case and nothing else (the cases after it render
+// in a new child); this process reads the renders back and compares them with the references.
 #pragma once
 
 #include <string>
@@ -42,22 +42,8 @@ double casePoints(int index, int count);
 // Grades every case of the run; never throws for a case (its problem is in its result).
 GradeSummary gradeStages(const GradingRun& run, const ComparisonSettings& settings);
 
-// The child's part: renders `cases` in order as the run says, each into
-// caseOutput(folder, case, run.seed), each within its limit in seconds (past it, SIGALRM ends the
-// process: the parent then knows which case hung from the files that exist).
-void renderGradingCases(const std::vector<const GradingCase*>& cases,
-                        const std::vector<double>& limits, const GradingRun& run,
-                        const std::string& folder);
-// Where a child writes the render of `gradingCase` with `seed`.
-std::string caseOutput(const std::string& folder, const GradingCase& gradingCase, uint64_t seed);
-
 // Fills in `result` from a render and its reference: verdict, images, timings, TODOs that ran.
 void judgeAgainstReference(CaseResult& result, const LoadedImage& render,
                            const GradingReference& reference, const ComparisonSettings& settings);
-
-// The arguments that make this program render `cases` in a child process.
-std::vector<std::string> renderCaseArguments(const std::vector<const GradingCase*>& cases,
-                                             const std::vector<double>& limits,
-                                             const GradingRun& run, const std::string& folder);
 
 }  // namespace pathway

@@ -1,0 +1,37 @@
+// `pathway grade --calibrate SEEDS`: the false-alarm rate (the reference stages,
+// --grade-reference) or the detection rate (a stage library) of each selected case over many
+// seeds, graded in this process, as a table on stdout.
+#include <cstdio>
+#include <string>
+
+#include "app/grade_modes.h"
+#include "grade/grade_calibration.h"
+#include "render/stage_library.h"
+
+namespace pathway {
+
+int calibrateMode(const GradeOptions& options) {
+  for (const std::string& library : options.stageLibraries) loadStageLibrary(library);
+  const Variant variant = options.gradeReference ? Variant::Reference : Variant::Student;
+  const ComparisonSettings settings;
+  std::printf("%-32s %5s %6s %9s %9s %9s %11s %8s\n", "case", "spp", "seeds", "failures", "rate",
+              "verdicts", "closest p", "seconds");
+  for (const GradingCase* c : selectedCases(options)) {
+    std::vector<uint32_t> spps = options.calibrationSpp;
+    if (spps.empty()) spps.push_back(c->spp);
+    for (uint32_t spp : spps) {
+      const CalibrationResult r = calibrate(*c, spp, variant, options.calibrate, options.seed,
+                                            options.references, kScenesDir, settings);
+      std::string seeds;  // the first few, to look at again with --seed
+      for (size_t i = 0; i < r.failedSeeds.size() && i < 5; ++i)
+        seeds += (i ? "," : "  seeds ") + std::to_string(r.failedSeeds[i]);
+      std::printf("%-32s %5u %6d %9d %9.4f %9d %11.3g %8.1f%s\n", r.caseId.c_str(), r.spp, r.seeds,
+                  r.failures, double(r.failures) / r.seeds, r.confirmedFailures, r.largestWorstP,
+                  r.seconds, seeds.c_str());
+      std::fflush(stdout);
+    }
+  }
+  return 0;
+}
+
+}  // namespace pathway

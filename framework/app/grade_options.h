@@ -1,0 +1,45 @@
+// What `pathway grade` was asked: its options (declared in grade_command.cpp), and what the modes
+// make of them: the grading cases chosen and the GradingRun that grades them.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "grade/grading_cases.h"
+#include "grade/stage_grading.h"
+
+namespace pathway {
+
+// The course's scenes, and under them the shipped references.
+inline const std::string kScenesDir = PATHWAY_SOURCE_DIR "/scenes";
+
+struct GradeOptions {
+  std::vector<int> stages;  // empty: all
+  std::vector<std::string> cases;
+  bool together = false;
+  bool gradeReference = false;
+  std::vector<std::string> stageLibraries;
+  std::string references = kScenesDir + "/references";
+  std::string report = "grade-report";
+  std::string results;  // empty: <report>/results.json
+  double timeLimit = 120.0;
+  uint64_t seed = kStudentSeed;
+  std::string image, reference;
+  std::string submissions;  // a folder of submission folders
+  std::string submission;   // one submission folder
+  std::string output = "grade-output";
+  bool tableOnly = false;  // with --submissions: the class table from results in --output
+  bool makeReferences = false;
+  bool listCases = false;
+  int calibrate = 0;                     // > 0: grade this many seeds per case, in this process
+  std::vector<uint32_t> calibrationSpp;  // empty: each case's own
+  bool quiet = false;
+};
+
+// The cases named with --case; else those of the --stage options; else every case.
+std::vector<const GradingCase*> selectedCases(const GradeOptions& options);
+// The selected cases, graded as the options say.
+GradingRun gradingRun(const GradeOptions& options);
+
+}  // namespace pathway

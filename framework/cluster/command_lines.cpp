@@ -1,0 +1,63 @@
+#include "cluster/command_lines.h"
+
+#include "render/render_settings.h"
+
+namespace pathway {
+namespace {
+
+constexpr const char* kQuiet = "-q";
+
+// A declared setting's option: "--spp".
+std::string flag(const OptionSpec& setting) {
+  return "--" + setting.name;
+}
+
+void append(std::vector<std::string>& arguments, const std::vector<std::string>& more) {
+  arguments.insert(arguments.end(), more.begin(), more.end());
+}
+
+}  // namespace
+
+std::vector<std::string> RenderPartCommand::toArguments() const {
+  std::vector<std::string> arguments = {"render"};
+  append(arguments, renderArguments);
+  append(arguments, {flag(setting::kSamplesPerPixel), std::to_string(spp), "--samples",
+                     std::to_string(sampleBegin) + ":" + std::to_string(sampleEnd)});
+  if (threads > 0) append(arguments, {flag(setting::kThreads), std::to_string(threads)});
+  if (checkOnly) arguments.push_back("--check");
+  if (quiet) arguments.push_back(kQuiet);
+  append(arguments, {"-o", output});
+  return arguments;
+}
+
+std::vector<std::string> MergeCommand::toArguments() const {
+  std::vector<std::string> arguments = {"merge"};
+  if (quiet) arguments.push_back(kQuiet);
+  append(arguments, {flag(setting::kExposure), std::to_string(exposure)});
+  append(arguments, parts);
+  for (const std::string& output : outputs) append(arguments, {"-o", output});
+  return arguments;
+}
+
+std::vector<std::string> GradeOptionsCheckCommand::toArguments() const {
+  std::vector<std::string> arguments = {"grade", "--list-cases"};
+  append(arguments, gradeArguments);
+  return arguments;
+}
+
+std::vector<std::string> SubmissionGradeCommand::toArguments() const {
+  std::vector<std::string> arguments = {"grade"};
+  if (quiet) arguments.push_back(kQuiet);
+  append(arguments, {"--submission", submission, "--output", output});
+  append(arguments, gradeArguments);
+  return arguments;
+}
+
+std::vector<std::string> ClassTableCommand::toArguments() const {
+  std::vector<std::string> arguments = {"grade"};
+  if (quiet) arguments.push_back(kQuiet);
+  append(arguments, {"--submissions", submissions, "--output", output, "--table-only"});
+  return arguments;
+}
+
+}  // namespace pathway

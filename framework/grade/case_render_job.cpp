@@ -1,0 +1,166 @@
+#include "grade/case_render_job.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <set>
+
+#include "core/child_process.h"
+#include "core/error.h"
+#include "io/image_io.h"
+#include "render/pixel_in_progress.h"
+#include "render/stage_library.h"
+#include "scene/gltf_loader.h"
+
+namespace pathway {
+namespace {
+
+// The job's options: written by toArguments, read by fromArguments, used nowhere else.
+constexpr const char* kOutputFlag = "--output";                   // once
+constexpr const char* kScenesFlag = "--scenes";                   // once
+constexpr const char* kSeedFlag = "--seed";                       // once
+constexpr const char* kCaseFlag = "--case";                       // per case, in order ...
+constexpr const char* kTimeLimitFlag = "--time-limit";            // ... each followed by its limit
+constexpr const char* kTogetherFlag = "--together";               // a switch
+constexpr const char* kGradeReferenceFlag = "--grade-reference";  // a switch
+constexpr const char* kStagesLibraryFlag = "--stages-library";    // per library, in order
+
+// The shortest text that reads back as the same double (15 -> "15", 17.25 -> "17.25").
+std::string exactText(double value) {
+  char text[64];
+  const std::to_chars_result written = std::to_chars(text, text + sizeof text, value);
+  return std::string(text, written.ptr);
+}
+
+// `text` whole as a number, or false.
+template <typename T>
+bool readNumber(const std::string& text, T& value) {
+  const char* end = text.data() + text.size();
+  const std::from_chars_result read = std::from_chars(text.data(), end, value);
+  return !text.empty() && read.ec == std::errc() && read.ptr == end;
+}
+
+PathwayError refusal(const std::string& problem) {
+  return PathwayError(std::string(CaseRenderJob::kCommand) + ": " + problem);
+}
+
+}  // namespace
+
+std::vector<std::string> CaseRenderJob::toArguments() const {
+  std::vector<std::string> arguments = {kCommand,  kOutputFlag,         output, kScenesFlag, scenes,
+                                        kSeedFlag, std::to_string(seed)};
+  for (const Case& c : cases)
+    arguments.insert(arguments.end(),
+                     {kCaseFlag, c.gradingCase->id(), kTimeLimitFlag, exactText(c.timeLimit)});
+  if (together) arguments.push_back(kTogetherFlag);
+  if (gradeReference) arguments.push_back(kGradeReferenceFlag);
+  for (const std::string& library : stageLibraries)
+    arguments.insert(arguments.end(), {kStagesLibraryFlag, library});
+  return arguments;
+}
+
+CaseRenderJob CaseRenderJob::fromArguments(const std::vector<std::string>& arguments) {
+  if (arguments.empty() || arguments.front() != kCommand)
+    throw refusal("the command line does not start with " + std::string(kCommand));
+  CaseRenderJob job;
+  std::set<std::string> given;  // the options that may be given once
+  for (size_t i = 1; i < arguments.size(); ++i) {
+    const std::string& flag = arguments[i];
+    const auto once = [&] {
+      if (!given.insert(flag).second) throw refusal(flag + " is given twice");
+    };
+    const auto value = [&]() -> const std::string& {
+      if (i + 1 == arguments.size() || arguments[i + 1].empty())
+        throw refusal(flag + " needs a value");
+      return arguments[++i];
+    };
+    if (flag == kOutputFlag) {
+      once();
+      job.output = value();
+    } else if (flag == kScenesFlag) {
+      once();
+      job.scenes = value();
+    } else if (flag == kSeedFlag) {
+      once();
+      const std::string& text = value();
+      if (!readNumber(text, job.seed))
+        throw refusal(flag + " '" + text + "' is not a seed (a whole number from 0)");
+    } else if (flag == kCaseFlag) {
+      const std::string& id = value();
+      try {
+        job.cases.push_back({&findGradingCase(id), 0.0});
+      } catch (const PathwayError& error) {
+        throw refusal(flag + ": " + error.what());
+      }
+    } else if (flag == kTimeLimitFlag) {
+      if (job.cases.empty() || job.cases.back().timeLimit > 0.0)
+        throw refusal(flag + " must follow a " + kCaseFlag + " of its own");
+      const std::string& text = value();
+      double& limit = job.cases.back().timeLimit;
+      if (!readNumber(text, limit) || !std::isfinite(limit) || limit <= 0.0)
+        throw refusal(flag + " '" + text + "' is not a positive number of seconds");
+    } else if (flag == kTogetherFlag) {
+      once();
+      job.together = true;
+    } else if (flag == kGradeReferenceFlag) {
+      once();
+      job.gradeReference = true;
+    } else if (flag == kStagesLibraryFlag) {
+      job.stageLibraries.push_back(value());
+    } else {
+      throw refusal("unknown argument '" + flag + "'");
+    }
+  }
+  for (const char* required : {kOutputFlag, kScenesFlag, kSeedFlag})
+    if (!given.count(required)) throw refusal(std::string("no ") + required + " given");
+  if (job.cases.empty()) throw refusal(std::string("no ") + kCaseFlag + " given");
+  for (const Case& c : job.cases)
+    if (c.timeLimit <= 0.0)
+      throw refusal(std::string(kCaseFlag) + " " + c.gradingCase->id() + " has no " +
+                    kTimeLimitFlag);
+  return job;
+}
+
+std::string CaseRenderJob::imagePath(const GradingCase& gradingCase) const {
+  return output + "/" + gradingCase.id() + "-" + std::to_string(seed) + ".exr";
+}
+
+bool operator==(const CaseRenderJob::Case& a, const CaseRenderJob::Case& b) {
+  return a.gradingCase == b.gradingCase && a.timeLimit == b.timeLimit;
+}
+
+bool operator==(const CaseRenderJob& a, const CaseRenderJob& b) {
+  return a.cases == b.cases && a.output == b.output && a.scenes == b.scenes && a.seed == b.seed &&
+         a.together == b.together && a.gradeReference == b.gradeReference &&
+         a.stageLibraries == b.stageLibraries;
+}
+
+void runCaseRenderJob(const CaseRenderJob& job) {
+  limitThisChild(64ull << 20);  // a render and its log need far less than 64 MiB
+  reportPixelsOnFatalSignals();
+  std::vector<int> registeredStages;
+  for (const std::string& library : job.stageLibraries)
+    for (int stage : loadStageLibrary(library)) registeredStages.push_back(stage);
+  for (const CaseRenderJob::Case& c : job.cases) {
+    const GradingCase& gradingCase = *c.gradingCase;
+    // The case's own deadline: past it, SIGALRM ends this process (its default action).
+    alarm(static_cast<unsigned>(std::ceil(c.timeLimit)));
+    if (!job.stageLibraries.empty() && std::find(registeredStages.begin(), registeredStages.end(),
+                                                 gradingCase.stage) == registeredStages.end())
+      throw PathwayError("no stage library given registers stage " +
+                         std::to_string(gradingCase.stage) +
+                         " (does its file end with its registerStage line?)");
+    const RenderRecipe recipe =
+        gradingCase.recipe(job.gradeReference ? Variant::Reference : Variant::Student,
+                           job.together ? EarlierStages::Own : EarlierStages::Reference, job.seed);
+    const Scene scene = loadScene(job.scenes + "/" + gradingCase.scene);
+    const RayTracer tracer(scene);
+    const RenderResult result = runRender(tracer, recipe);
+    writeExr(job.imagePath(gradingCase), result.images, result.metadata);
+  }
+  alarm(0);
+}
+
+}  // namespace pathway

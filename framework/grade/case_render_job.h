@@ -1,0 +1,58 @@
+// The grader's child process as one type. The grader (stage_grading.cpp) renders a stage's cases
+// in a child process of this program, so that a stage that crashes or hangs fails its own case and
+// nothing else. What a child renders is a CaseRenderJob: grading cases, each within its time limit,
+// into a folder, with a seed and a choice of stages. The job travels as the child's command line,
+// `pathway render-grading-cases ...` (a hidden subcommand), written by toArguments() in the parent
+// and read back by fromArguments() in the child. Both directions, and the child's work, are in
+// case_render_job.cpp and nowhere else, so the two ends cannot disagree about a flag.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "grade/grading_cases.h"
+
+namespace pathway {
+
+struct CaseRenderJob {
+  // The hidden subcommand of `pathway` that runs a job: the first word of toArguments().
+  static constexpr const char* kCommand = "render-grading-cases";
+
+  struct Case {
+    const GradingCase* gradingCase = nullptr;
+    double timeLimit = 0.0;  // seconds; past it, SIGALRM ends the child
+  };
+  std::vector<Case> cases;  // rendered in this order
+  std::string output;       // the folder the renders go to (imagePath)
+  std::string scenes;       // the folder of the scenes
+  uint64_t seed = kStudentSeed;
+  bool together = false;        // the student's earlier stages instead of the reference's
+  bool gradeReference = false;  // the reference stages themselves instead of the student's
+  // Stage libraries (render/stage_library.h) loaded before rendering, in this order. The parent
+  // gives absolute paths: the child may resolve a relative one differently.
+  std::vector<std::string> stageLibraries;
+
+  // The child's command line after the program's path: kCommand, then the job.
+  std::vector<std::string> toArguments() const;
+  // The job from a command line toArguments() wrote (kCommand first). Throws one PathwayError that
+  // names the first argument it cannot take: unknown, repeated, without its value or malformed
+  // (a time limit or seed that is not a number, an unknown case), or one that is missing.
+  static CaseRenderJob fromArguments(const std::vector<std::string>& arguments);
+
+  // Where the child writes the render of `gradingCase`: a file in `output` named after the case
+  // and the seed. It is there only once the case is finished (images are written whole).
+  std::string imagePath(const GradingCase& gradingCase) const;
+};
+
+bool operator==(const CaseRenderJob::Case& a, const CaseRenderJob::Case& b);
+bool operator==(const CaseRenderJob& a, const CaseRenderJob& b);
+
+// The child's part: renders the job's cases in order, each into job.imagePath(case) and each
+// within its own time limit (past it, SIGALRM ends the process: the parent then knows which case
+// hung from the images that exist). Limits what the process may write and reports the pixels in
+// progress when a signal ends it (render/pixel_in_progress.h). Throws PathwayError when a stage
+// a case needs is in none of the job's libraries.
+void runCaseRenderJob(const CaseRenderJob& job);
+
+}  // namespace pathway

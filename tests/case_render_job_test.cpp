@@ -1,0 +1,146 @@
+// The grader's child command line (grade/case_render_job.h): what the parent writes, the child
+// reads back as the same job (paths with spaces, several cases, exact time limits); anything else
+// is refused with one message that names the argument; and the program runs a job from it.
+#include "grade/case_render_job.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "run_command.h"
+#include "stage_under_test.h"
+
+namespace pathway {
+namespace {
+
+namespace fs = std::filesystem;
+
+CaseRenderJob sampleJob() {
+  CaseRenderJob job;
+  const std::vector<GradingCase>& cases = gradingCases();
+  job.cases = {{&cases.at(0), 15.0}, {&cases.at(3), 17.123456789}, {&cases.back(), 120.0}};
+  job.output = "/tmp/a grading folder/work";
+  job.scenes = "/srv/course files/scenes";
+  job.seed = 18446744073709551615ull;  // the largest seed
+  job.together = true;
+  job.gradeReference = true;
+  job.stageLibraries = {"/home/a student/build/stage1.so", "/home/a student/build/stage 2.so"};
+  return job;
+}
+
+// The message of the PathwayError that parsing `arguments` throws ("" when it throws none).
+std::string refusal(const std::vector<std::string>& arguments) {
+  try {
+    CaseRenderJob::fromArguments(arguments);
+  } catch (const PathwayError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+// sampleJob()'s command line with `from`..`to` (word indices) replaced by `words`.
+std::vector<std::string> edited(size_t from, size_t to, const std::vector<std::string>& words) {
+  std::vector<std::string> arguments = sampleJob().toArguments();
+  arguments.erase(arguments.begin() + from, arguments.begin() + to);
+  arguments.insert(arguments.begin() + from, words.begin(), words.end());
+  return arguments;
+}
+
+TEST(CaseRenderJob, ItsCommandLineReadsBackAsTheSameJob) {
+  const CaseRenderJob job = sampleJob();
+  const std::vector<std::string> arguments = job.toArguments();
+  EXPECT_EQ(arguments.front(), CaseRenderJob::kCommand);
+  EXPECT_EQ(CaseRenderJob::fromArguments(arguments), job);
+  // Without the switches and libraries, with one case.
+  CaseRenderJob plain;
+  plain.cases = {{&gradingCases().at(1), 30.5}};
+  plain.output = "out";
+  plain.scenes = "scenes";
+  EXPECT_EQ(CaseRenderJob::fromArguments(plain.toArguments()), plain);
+  EXPECT_FALSE(CaseRenderJob::fromArguments(plain.toArguments()) == job);
+  // Where the child's render goes: the parent looks for it there.
+  EXPECT_EQ(
+      job.imagePath(*job.cases[1].gradingCase),
+      "/tmp/a grading folder/work/" + job.cases[1].gradingCase->id() + "-18446744073709551615.exr");
+}
+
+TEST(CaseRenderJob, AnythingElseIsRefusedNamingWhat) {
+  const std::vector<std::string> arguments = sampleJob().toArguments();
+  ASSERT_EQ(arguments[7], "--case");  // after the command, --output, --scenes and --seed
+  ASSERT_EQ(arguments[9], "--time-limit");
+  const std::string command = CaseRenderJob::kCommand;
+  // An unknown flag, and a flag of `pathway grade` that is not the child's.
+  EXPECT_EQ(refusal(edited(1, 1, {"--bogus"})), command + ": unknown argument '--bogus'");
+  EXPECT_EQ(refusal(edited(1, 1, {"--render-case"})),
+            command + ": unknown argument '--render-case'");
+  // A value missing at the end, or empty.
+  std::vector<std::string> truncated = arguments;
+  truncated.push_back("--stages-library");
+  EXPECT_EQ(refusal(truncated), command + ": --stages-library needs a value");
+  EXPECT_EQ(refusal(edited(2, 3, {""})), command + ": --output needs a value");
+  // A time limit or seed that is not a number.
+  EXPECT_EQ(refusal(edited(10, 11, {"fast"})),
+            command + ": --time-limit 'fast' is not a positive number of seconds");
+  EXPECT_EQ(refusal(edited(10, 11, {"15s"})),
+            command + ": --time-limit '15s' is not a positive number of seconds");
+  EXPECT_EQ(refusal(edited(10, 11, {"0"})),
+            command + ": --time-limit '0' is not a positive number of seconds");
+  EXPECT_EQ(refusal(edited(10, 11, {"nan"})),
+            command + ": --time-limit 'nan' is not a positive number of seconds");
+  EXPECT_EQ(refusal(edited(6, 7, {"-1"})),
+            command + ": --seed '-1' is not a seed (a whole number from 0)");
+  // An unknown case, named with the known ones.
+  const std::string unknown = refusal(edited(8, 9, {"stage9-nowhere"}));
+  EXPECT_EQ(unknown.rfind(command + ": --case: unknown grading case 'stage9-nowhere' (known: ", 0),
+            0u)
+      << unknown;
+  // A case without its time limit, a time limit without its case, an option given twice.
+  EXPECT_EQ(
+      refusal(edited(9, 11, {})),
+      command + ": --case " + sampleJob().cases[0].gradingCase->id() + " has no --time-limit");
+  EXPECT_EQ(refusal(edited(7, 9, {})), command + ": --time-limit must follow a --case of its own");
+  EXPECT_EQ(refusal(edited(1, 1, {"--seed", "2"})), command + ": --seed is given twice");
+  EXPECT_EQ(refusal(edited(1, 1, {"--together"})), command + ": --together is given twice");
+  // What every job has.
+  EXPECT_EQ(refusal(edited(1, 3, {})), command + ": no --output given");
+  EXPECT_EQ(refusal({command, "--output", "o", "--scenes", "s", "--seed", "1"}),
+            command + ": no --case given");
+  EXPECT_EQ(refusal(edited(0, 1, {"grade"})),
+            command + ": the command line does not start with " + command);
+}
+
+TEST(CaseRenderJob, TheProgramHandsItsCommandLineToTheJob) {
+  // Refused by the job's parser, not by CLI11, in one line.
+  const test::CommandOutcome refused = test::runCommand(
+      std::string(PATHWAY_BINARY) + " " + CaseRenderJob::kCommand + " --output o --bogus");
+  EXPECT_EQ(refused.exitCode, 1);
+  EXPECT_NE(refused.output.find("pathway: error: " + std::string(CaseRenderJob::kCommand) +
+                                ": unknown argument '--bogus'"),
+            std::string::npos)
+      << refused.output;
+  // Not listed in --help.
+  const test::CommandOutcome help = test::runCommand(std::string(PATHWAY_BINARY) + " --help");
+  EXPECT_EQ(help.output.find(CaseRenderJob::kCommand), std::string::npos) << help.output;
+
+  // A job run by the program writes its render where imagePath says (a folder with a space).
+  if (!test::haveReference()) GTEST_SKIP() << "needs the reference stages";
+  const fs::path folder = test::freshTestFolder("pathway_case_render_job") / "the renders";
+  fs::create_directories(folder);
+  CaseRenderJob job;
+  job.cases = {{&gradingCases().at(0), 60.0}};
+  job.output = folder.string();
+  job.scenes = PATHWAY_SCENES_DIR;
+  job.gradeReference = true;
+  std::string command = PATHWAY_BINARY;
+  for (const std::string& argument : job.toArguments()) command += " '" + argument + "'";
+  const test::CommandOutcome rendered = test::runCommand(command);
+  EXPECT_EQ(rendered.exitCode, 0) << rendered.output;
+  EXPECT_TRUE(fs::is_regular_file(job.imagePath(*job.cases[0].gradingCase))) << rendered.output;
+  fs::remove_all(folder.parent_path());
+}
+
+}  // namespace
+}  // namespace pathway
