@@ -61,19 +61,13 @@ RaySets makeRays(const Scene& scene, const RayTracer& tracer, int width, int hei
   return sets;
 }
 
-namespace {
-
-RenderRecipe benchRecipe(const std::string& name, const Params& params, int width, uint32_t spp) {
-  return RecipeBuilder(name).params(params).size(width, width).spp(spp);
-}
-
-}  // namespace
-
 PassTimer::PassTimer(const Scene& scene, const RayTracer& tracer, const std::string& name,
                      const Params& params, int width, uint32_t spp, int passes, int threads) {
-  RenderRecipe recipe = benchRecipe(name, params, width, spp);
-  recipe.settings.samplesPerPixel = spp * (1 + passes);
-  recipe.settings.threads = threads;
+  const RenderRecipe recipe = RecipeBuilder(name)
+                                  .params(params)
+                                  .size(width, width)
+                                  .spp(spp * (1 + passes), spp)
+                                  .threads(threads);
   session_ = std::make_unique<RenderSession>(tracer, Camera(scene, width, width), recipe);
   timePass();
 }
@@ -105,8 +99,8 @@ double rendererSeconds(const Scene& scene, const RayTracer& tracer, const std::s
 
 std::vector<LoggedRay> recordRays(const Scene& scene, RayTracer& tracer, const std::string& name,
                                   const Params& params, int width, uint32_t spp) {
-  RenderRecipe recipe = benchRecipe(name, params, width, spp);
-  recipe.settings.threads = 1;  // the log is not synchronised
+  const RenderRecipe recipe =  // one thread: the log is not synchronised
+      RecipeBuilder(name).params(params).size(width, width).spp(spp).threads(1);
   std::vector<LoggedRay> log;
   tracer.setRayLog(&log);
   runRender(tracer, Camera(scene, width, width), recipe);

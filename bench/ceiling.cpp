@@ -100,18 +100,15 @@ int benchCeiling(const CeilingOptions& options) {
   const uint32_t spp = options.samplesPerPixel;
   const Camera camera(scene, width, height);
 
-  // The framework's side as `pathway render` builds it: choices, checked into a recipe, run
-  // through a session. light-pick=area is the estimator the raw tracer implements (stage 5's
+  // The framework's side as `pathway render` builds it: choices, built into a recipe, run through
+  // a session. light-pick=area is the estimator the raw tracer implements (stage 5's
   // default is power; the two are the same when every emitter has the same radiance).
   RenderChoices choices;
   choices.scene = options.scene;
   choices.integrator = "stage5@ref";
   choices.params = {"light-pick=area"};
-  RenderRecipe recipe = choices.recipe();
-  recipe.settings.width = width;
-  recipe.settings.height = height;
-  recipe.settings.samplesPerPixel = spp;
-  recipe.settings.samplesPerPass = samplesPerProgressPass(spp);  // as `pathway render` does
+  const RenderRecipe recipe =  // in passes as `pathway render` makes them
+      choices.builder().size(width, height).spp(spp, samplesPerProgressPass(spp));
 
   // The raw side takes stage 5's depths from the same checked recipe: they cannot drift apart.
   RawPathSettings rawSettings;

@@ -238,8 +238,8 @@ void benchSpp(const Scene& scene, const RayTracer& tracer, const GrowthOptions& 
   std::vector<std::string> fits;
   const Camera camera(scene, kSppSide, kSppSide);
   for (const char* integrator : {"stage3@ref", "stage5@ref"}) {
+    // One sample per pass: the recipe's default, so time grows with spp as the passes do.
     RenderRecipe recipe = RecipeBuilder(integrator).size(kSppSide, kSppSide);
-    recipe.settings.samplesPerPass = 1;  // as `pathway render` runs by default
     // Every spp once per round, so that a busy moment of the machine bends no part of the curve
     // more than another.
     std::vector<double> spps(std::begin(sppValues), std::end(sppValues));

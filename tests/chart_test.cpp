@@ -85,6 +85,8 @@ TEST(ChartSpec, RefusesWhatCannotBeCharted) {
   expectRefused(specOf({"a: nosuchstage"}), "nosuchstage");
   expectRefused(specOf({"a: stage2 ao-rays=0"}), "ao-rays");
   expectRefused(specOf({"a: stage1 sampler=halton"}), "halton");
+  // Settings out of their declared range, refused before anything renders.
+  expectRefused(specOf({"a: stage1 filter=tent filter-radius=9"}), "filter-radius must be in");
   expectRefused(specOf({"a: stage1", "a: stage1 filter=tent"}), "two chart configurations");
   expectRefused(specOf({"a: stage1 reference=b"}), "reference=b");
   // A reference must estimate the same image: same scene, same filter.

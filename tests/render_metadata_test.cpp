@@ -113,7 +113,11 @@ TEST(RenderMetadata, AMalformedValueIsRefusedNamingTheFileAndKey) {
       {{"pathway:sampleRange", "8:4"}, {"pathway:sampleRangeOf", "16"}},
       {{"pathway:sampleRange", "0:32"}, {"pathway:sampleRangeOf", "16"}},
       {{"pathway:cameraPosition", "1 2"}},
-      {{"pathway:grading:blockCorrelation", "1 1"}, {"pathway:grading:case", "x"}},
+      {{"pathway:grading:blockCorrelation", "1 1"},
+       {"pathway:grading:case", "x"},
+       {"pathway:grading:replicates", "64"},
+       {"pathway:grading:tileSize", "8"},
+       {"pathway:grading:blockSize", "8"}},
   };
   for (const auto& attributes : cases) {
     try {
@@ -123,6 +127,19 @@ TEST(RenderMetadata, AMalformedValueIsRefusedNamingTheFileAndKey) {
       const std::string message = error.what();
       EXPECT_EQ(message.rfind("odd.exr: " + attributes.front().first, 0), 0u) << message;
     }
+  }
+  // A grading reference must carry every number of its record.
+  try {
+    readMetadataAttributes({{"pathway:grading:case", "x"},
+                            {"pathway:grading:blockCorrelation", "1 1 1"},
+                            {"pathway:grading:replicates", "64"},
+                            {"pathway:grading:tileSize", "8"},
+                            {"pathway:grading:blockSize", "8"},
+                            {"pathway:grading:raysPerSecond", "1e6"}},
+                           "odd.exr");
+    ADD_FAILURE() << "a grading record without secondsPerRender was accepted";
+  } catch (const PathwayError& error) {
+    EXPECT_EQ(std::string(error.what()), "odd.exr: pathway:grading:secondsPerRender '' is missing");
   }
   // Other attributes (another program's) are not Pathway's to judge.
   EXPECT_NO_THROW(readMetadataAttributes({{"owner", "x"}, {"spp", "many"}}, "odd.exr"));

@@ -15,6 +15,7 @@
 
 #include "app/commands.h"
 #include "app/grade_modes.h"
+#include "app/shared_options.h"
 #include "core/error.h"
 #include "render/stage_catalog.h"
 
@@ -92,10 +93,11 @@ Command addGradeCommand(CLI::App& app) {
   grade->add_option("--time-limit", options->timeLimit, "Seconds one case may render")
       ->check(CLI::Range(1.0, 86400.0))
       ->capture_default_str();
-  grade
-      ->add_option("--seed", options->seed,
-                   "Seed of the graded renders (the references use others)")
-      ->capture_default_str();
+  addOption(*grade,
+            setting::kSeed.withDefault(kStudentSeed,
+                                       "Seed of the graded renders (the references use "
+                                       "others)"),
+            options->seed);
   grade->add_option("--image", options->image, "Compare this EXR ...");
   grade->add_option("--reference", options->reference,
                     "... with this one (a grading reference, or a render with variance)");

@@ -61,6 +61,9 @@ int run(const RenderOptions& options, const LaunchClock& clock) {
   if (!options.samples.empty() && !parseSampleRange(options.samples, s.sampleBegin, s.sampleEnd))
     throw PathwayError("--samples '" + options.samples +
                        "': expected A:B with A < B (sample indices)");
+  // Where the CLI's settings enter: a range that is not part of --spp is refused before the
+  // scene loads (the others CLI11 checks as it reads them).
+  s.check();
   s.samplesPerPass = samplesPerProgressPass(s.samplesToRender());
   for (const std::string& output : options.outputs) checkImagePath(output);
 

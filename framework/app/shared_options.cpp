@@ -11,17 +11,11 @@ void addSharedOptions(CLI::App& command, RenderChoices& choices) {
       ->capture_default_str();
   command.add_option("-p,--param", choices.params,
                      "Integrator parameter name=value (repeatable; see pathway render --list)");
-  command
-      .add_option("--earlier-stages", choices.earlierStages,
-                  "Where the integrator's earlier stages come from: 'own' (your stage 3 uses your "
-                  "stages 1-2) or 'reference' (the reference's stages 1-2)")
-      ->capture_default_str();
-  command.add_option(
-      "--sampler", choices.sampler,
-      "independent, stratified or sobol (default: the integrator's; stage 3 uses sobol)");
+  addChoiceOption(command, setting::kEarlierStages, choices.earlierStages);
+  addChoiceOption(command, setting::kSampler, choices.sampler,
+                  "the integrator's; stage 3 uses sobol");
   addOption(command, setting::kSeed, choices.seed);
-  command.add_option("--filter", choices.filter, "Pixel filter: box, tent, mitchell, gaussian")
-      ->capture_default_str();
+  addChoiceOption(command, setting::kFilter, choices.filter);
   addOption(command, setting::kFilterRadius, choices.filterRadius);
   command.add_flag("--strict", choices.strictScene,
                    "Refuse a scene that requires KHR_lights_punctual (Blender's lamps) instead of "

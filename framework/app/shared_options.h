@@ -27,6 +27,19 @@ CLI::Option* addOption(CLI::App& command, const OptionSpec& spec, T& value) {
   return option->capture_default_str();
 }
 
+// A choice's option, written by name (the name is checked where it is read, with the choices
+// listed): its default name, or none when `whenNotGiven` says how it is worked out.
+inline CLI::Option* addChoiceOption(CLI::App& command, const OptionSpec& spec, std::string& value,
+                                    const std::string& whenNotGiven = "") {
+  const std::string help = spec.help + ": " + spec.describeRange();
+  if (!whenNotGiven.empty()) {
+    value.clear();
+    return command.add_option("--" + spec.name, value, help + " (default: " + whenNotGiven + ")");
+  }
+  value = spec.format(spec.defaultValue);
+  return command.add_option("--" + spec.name, value, help)->capture_default_str();
+}
+
 // The same for an option whose value, when it is not given, is worked out later (`value` stays
 // 0): `render --height` from the camera's aspect ratio, `view --width` from the window.
 template <typename T>

@@ -137,8 +137,8 @@ void ChartSpec::check() const {
     if (!labels.insert(config.label).second)
       throw PathwayError("two chart configurations are labelled \"" + config.label + "\"");
     try {
-      const RenderRecipe recipe = config.choices.recipe();
-      (void)recipe;
+      // Where a configuration's settings enter: refused here, before anything renders.
+      config.choices.recipe().settings.check();
     } catch (const PathwayError& error) {
       throw PathwayError("chart configuration \"" + config.source + "\": " + error.what());
     }

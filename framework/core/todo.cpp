@@ -7,8 +7,6 @@
 namespace pathway {
 namespace {
 
-std::mutex printMutex;
-std::vector<const TodoSite*> sitesPrinted;  // guarded by printMutex
 std::atomic<uint64_t> nextLogId{1};
 thread_local TodoLog* currentLog = nullptr;
 
@@ -53,9 +51,7 @@ void reportTodo(TodoSite& site) {
   TodoLog* log = currentLog;
   if (log) log->record(site);
   site.logSeen.store(log ? log->id() : 0, std::memory_order_relaxed);
-  std::lock_guard<std::mutex> lock(printMutex);
-  if (std::find(sitesPrinted.begin(), sitesPrinted.end(), &site) != sitesPrinted.end()) return;
-  sitesPrinted.push_back(&site);
+  if (site.printed.exchange(true)) return;
   std::fprintf(stderr, "TODO not done yet: %s:%d: %s (a placeholder runs meanwhile)\n",
                relativeToProject(site.file).c_str(), site.line, site.task);
 }

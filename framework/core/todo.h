@@ -18,6 +18,7 @@ struct TodoSite {
   const char* task;
   // The log this site last went into: lets the hot path skip the locks after the first hit.
   std::atomic<uint64_t> logSeen{UINT64_MAX};
+  std::atomic<bool> printed{false};  // its line went to stderr (once per process)
 };
 
 struct TodoRecord {

@@ -23,8 +23,8 @@ constexpr const char* kScenesFlag = "--scenes";                   // once
 constexpr const char* kSeedFlag = "--seed";                       // once
 constexpr const char* kCaseFlag = "--case";                       // per case, in order ...
 constexpr const char* kTimeLimitFlag = "--time-limit";            // ... each followed by its limit
-constexpr const char* kTogetherFlag = "--together";               // a switch
-constexpr const char* kGradeReferenceFlag = "--grade-reference";  // a switch
+constexpr const char* kTogetherFlag = "--together";               // a toggle (present or not)
+constexpr const char* kGradeReferenceFlag = "--grade-reference";  // a toggle (present or not)
 constexpr const char* kStagesLibraryFlag = "--stages-library";    // per library, in order
 
 // The shortest text that reads back as the same double (15 -> "15", 17.25 -> "17.25").

@@ -22,7 +22,7 @@ GradeSummary compareImageFiles(const std::string& image, const std::string& refe
   try {
     const LoadedImage render = readImageFile(image);
     const LoadedImage other = readImageFile(reference);
-    if (other.layers.count("tileVariance")) {
+    if (other.metadata.grading) {
       judgeAgainstReference(result, render, readGradingReference(reference), settings);
     } else {
       // A plain render as the reference: each file's own per-pixel variance.

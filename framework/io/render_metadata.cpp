@@ -1,6 +1,7 @@
 #include "io/render_metadata.h"
 
 #include <cstdio>
+#include <cstring>
 #include <map>
 #include <set>
 #include <sstream>
@@ -102,7 +103,7 @@ class AttributeReader {
                   const std::string& file)
       : file_(file) {
     for (const auto& [name, value] : attributes)
-      if (name.rfind(kPrefix, 0) == 0) values_[name.substr(8)] = value;
+      if (name.rfind(kPrefix, 0) == 0) values_[name.substr(std::strlen(kPrefix))] = value;
   }
 
   bool has(const char* key) const { return values_.count(key) > 0; }
@@ -134,6 +135,12 @@ class AttributeReader {
     } catch (const PathwayError& error) {
       fail(key, std::string("is not known: ") + error.what());
     }
+  }
+  // The same, for a key the file must have once it has any of its section.
+  template <typename Number>
+  Number required(const char* key) const {
+    if (!has(key)) fail(key, "is missing");
+    return number<Number>(key);
   }
   [[noreturn]] void fail(const char* key, const std::string& what) const {
     throw PathwayError(file_ + ": " + kPrefix + key + " '" + text(key) + "' " + what);
@@ -203,14 +210,14 @@ RenderMetadata readMetadataAttributes(
   if (in.has("grading:case") || in.has("grading:replicates")) {
     GradingRecord g;
     g.caseId = in.text("grading:case");
-    g.replicates = in.number<int>("grading:replicates");
-    g.tileSize = in.number<int>("grading:tileSize");
-    g.blockSize = in.number<int>("grading:blockSize");
+    g.replicates = in.required<int>("grading:replicates");
+    g.tileSize = in.required<int>("grading:tileSize");
+    g.blockSize = in.required<int>("grading:blockSize");
     std::istringstream correlation(in.text("grading:blockCorrelation"));
     if (!(correlation >> g.blockCorrelation.x >> g.blockCorrelation.y >> g.blockCorrelation.z))
       in.fail("grading:blockCorrelation", "is not three numbers");
-    g.secondsPerRender = in.number<double>("grading:secondsPerRender");
-    g.raysPerSecond = in.number<double>("grading:raysPerSecond");
+    g.secondsPerRender = in.required<double>("grading:secondsPerRender");
+    g.raysPerSecond = in.required<double>("grading:raysPerSecond");
     m.grading = g;
   }
   return m;

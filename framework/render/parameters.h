@@ -7,6 +7,7 @@
 
 #include <map>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -49,7 +50,10 @@ struct OptionSpec {
 
   template <typename T>
   T defaultAs() const {
-    return static_cast<T>(defaultValue);
+    if constexpr (std::is_enum_v<T>)
+      return static_cast<T>(static_cast<long long>(defaultValue));  // a choice's index
+    else
+      return static_cast<T>(defaultValue);
   }
 
   bool isWholeNumber() const { return kind != OptionKind::Real; }

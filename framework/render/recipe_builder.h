@@ -1,7 +1,7 @@
 // The one way a RenderRecipe is put together: the integrator by name, with its declared
 // parameters at their defaults and the sampler it is meant to be seen with, then whatever
 // differs. Names and parameter values are checked as they are given (PathwayError naming the
-// first refused); the settings' ranges are checked once, when the render starts (Renderer).
+// first refused); the settings' ranges are checked where they enter and when the render starts.
 //   RenderRecipe recipe = RecipeBuilder("stage5@ref").param("nee", "off").size(64, 48).spp(16);
 #pragma once
 
@@ -28,7 +28,8 @@ class RecipeBuilder {
   // Every setting at once (the viewer's panel holds them together); the calls below change one.
   RecipeBuilder& settings(const RenderSettings& settings);
   RecipeBuilder& size(int width, int height);
-  // `spp` samples per pixel, in passes of `perPass` (0: all in one pass).
+  // `spp` samples per pixel, in passes of `perPass` (0: all in one pass). Without this call the
+  // settings' defaults hold (16 spp, one per pass).
   RecipeBuilder& spp(uint32_t spp, uint32_t perPass = 0);
   RecipeBuilder& sampler(SamplerType sampler);
   RecipeBuilder& seed(uint64_t seed);
@@ -36,7 +37,9 @@ class RecipeBuilder {
   RecipeBuilder& threads(int threads);
 
   const RenderRecipe& recipe() const { return recipe_; }
-  operator const RenderRecipe&() const { return recipe_; }  // NOLINT: a builder reads as its result
+  operator RenderRecipe() const {
+    return recipe_;
+  }  // NOLINT: a builder reads as its result (a copy)
 
  private:
   const IntegratorInfo& info_;

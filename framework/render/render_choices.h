@@ -13,11 +13,11 @@ namespace pathway {
 struct RenderChoices {
   std::string scene;
   std::string integrator = setting::kIntegrator;
-  std::vector<std::string> params;    // "name=value", checked against the integrator's declarations
-  std::string earlierStages = "own";  // "own" or "reference" (see EarlierStages)
-  std::string sampler;                // empty: the integrator's own default
+  std::vector<std::string> params;  // "name=value", checked against the integrator's declarations
+  std::string earlierStages = setting::kEarlierStages.format(setting::kEarlierStages.defaultValue);
+  std::string sampler;  // empty: the integrator's own default
   uint64_t seed = setting::kSeed.defaultAs<uint64_t>();
-  std::string filter = filterTypeName(setting::kFilter);
+  std::string filter = setting::kFilter.format(setting::kFilter.defaultValue);
   float filterRadius = setting::kFilterRadius.defaultAs<float>();  // 0: the filter's own radius
   bool strictScene = false;  // refuse a scene requiring lamps instead of ignoring them (--strict)
 

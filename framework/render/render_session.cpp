@@ -66,7 +66,10 @@ RenderSession::RenderSession(const RayTracer& tracer, const Camera& camera,
   char hash[17];
   std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(tracer.sceneHash()));
   sceneHash_ = hash;
-  integratorObject_ = info_.create({recipe_.params, kit_, tracer.scene()});
+  {
+    const CurrentTodoLog logged(&constructionTodos_);  // a stage's constructor may run a TODO
+    integratorObject_ = info_.create({recipe_.params, kit_, tracer.scene()});
+  }
   renderer_ = std::make_unique<Renderer>(tracer, camera_, *integratorObject_, kit_.stage1(),
                                          recipe_.settings);
 }
@@ -79,7 +82,13 @@ RenderResult RenderSession::develop() {
   film.developAll(result.images.color, result.images.variance, result.images.weight,
                   &result.unresolvedPixels);
   result.stats = renderer_->stats();
-  result.todos = renderer_->todos().records();
+  result.todos = constructionTodos_.records();
+  for (const TodoRecord& todo : renderer_->todos().records()) {
+    bool known = false;
+    for (const TodoRecord& seen : result.todos)
+      known = known || (seen.file == todo.file && seen.line == todo.line);
+    if (!known) result.todos.push_back(todo);
+  }
   result.metadata = renderMetadata(tracer_.scene().sourcePath, sceneHash_, info_.stage, recipe_,
                                    result.stats, result.unresolvedPixels, result.todos);
   return result;

@@ -59,6 +59,8 @@ class RenderSession {
   const IntegratorInfo& info_;
   RenderRecipe recipe_;
   StageKit kit_;
+  TodoLog
+      constructionTodos_;  // those the integrator's constructor ran (the renderer keeps the rest)
   std::unique_ptr<Integrator> integratorObject_;
   Camera camera_;
   std::string sceneHash_;  // of the scene's content, for the metadata

@@ -1,6 +1,6 @@
 // The render settings every command shares, each declared once as an option (render/parameters.h)
 // with its default, range and help. The commands' CLI options, the viewer's widgets and the
-// renderer's one check (when a Renderer is made) are all made from these declarations.
+// checks (where settings enter, and the Renderer's) are all made from these declarations.
 #pragma once
 
 #include <algorithm>
@@ -22,7 +22,7 @@ inline const OptionSpec kHeight =
 inline const OptionSpec kSamplesPerPixel =
     OptionSpec::integer("spp", 16, 1, 1 << 20, "Samples per pixel");
 inline const OptionSpec kSamplesPerPass = OptionSpec::integer(
-    "spp-per-pass", 1, 1, 1 << 20,
+    "spp-per-pass", 1, 1, kSamplesPerPixel.maxValue,
     "Samples added to every pixel per pass (the viewer shows an image after each)");
 inline const OptionSpec kSeed =
     OptionSpec::integer("seed", 0, 0, 18446744073709551615.0, "Random seed; same seed, same image");
@@ -38,12 +38,20 @@ inline const OptionSpec kTileSize = OptionSpec::integer(
 // The viewer's "Make reference" (error plot): well beyond what the panes reach in a few seconds,
 // so the reference's own noise stays below their error for most of the curve.
 inline const OptionSpec kReferenceSamplesPerPixel = OptionSpec::integer(
-    "reference-spp", 1024, 16, 1 << 20,
+    "reference-spp", 1024, 16, kSamplesPerPixel.maxValue,
     "Samples per pixel of the reference the viewer makes on demand (Make reference, key M)");
-inline constexpr FilterType kFilter = FilterType::Box;
+// The choices list their options in the order of the enums they stand for.
+inline const OptionSpec kFilter =
+    OptionSpec::choice("filter", "box", filterTypeNames(), "Pixel filter");
+// No fixed default: each integrator declares the sampler it is meant to be seen with.
+inline const OptionSpec kSampler =
+    OptionSpec::choice("sampler", "independent", samplerTypeNames(), "Sampler");
+inline const OptionSpec kEarlierStages = OptionSpec::choice(
+    "earlier-stages", "own", {"own", "reference"},
+    "Where the integrator's earlier stages come from (for your stage 3: 'own' is your stages "
+    "1-2, 'reference' the reference's)");
 // The integrator a render or the viewer starts with when none is named.
 inline constexpr const char* kIntegrator = "stage1";
-// The sampler has no fixed default: each integrator declares the one it is meant to be seen with.
 
 }  // namespace setting
 
@@ -66,7 +74,7 @@ struct RenderSettings {
   SamplerType sampler = SamplerType::Independent;
   uint64_t seed = setting::kSeed.defaultAs<uint64_t>();
   int threads = setting::kThreads.defaultAs<int>();
-  FilterType filter = setting::kFilter;
+  FilterType filter = setting::kFilter.defaultAs<FilterType>();
   float filterRadius = setting::kFilterRadius.defaultAs<float>();  // 0: the filter's natural radius
   int tileSize = setting::kTileSize.defaultAs<int>();
   // The sample indices this render draws: [sampleBegin, sampleEnd) of the `samplesPerPixel` a

@@ -81,8 +81,8 @@
 //   float PixelFilter::evaluate(float dx, float dy) const;  // f(dx)·f(dy)
 //
 // Picking an emitter for next-event estimation (render/emitter_picker.h, scene/emitters.h):
+//   enum class EmitterWeighting { Area, Power };  // stage 5's params.lightPick
 //   class EmitterPicker {
-//     enum class EmitterWeighting { Area, Power };  // stage 5's params.lightPick
 //     EmitterPicker(const Scene& scene, EmitterWeighting weighting);
 //     struct Pick { const EmissiveTriangle* emitter; float probability; };  // of this triangle
 //     bool empty() const;        // no emitter can emit power

@@ -19,7 +19,7 @@
 namespace pathway {
 
 // What a stage's integrator is built from: its parameters, typed, the earlier stages' functions
-// and the scene.
+// and the scene. It lives while the constructor runs: copy what the integrator keeps.
 template <typename Params>
 struct StageSetup {
   const Params& params;
@@ -74,8 +74,8 @@ struct StageDefinition {
     declared.defaultSampler = defaultSampler;
     for (const StageParam<Params>& row : params) declared.params.push_back(row.option);
     if (check)
-      declared.check = [this](const std::string& name, const ParamValues& values) {
-        check(name, read(values));
+      declared.check = [definition = *this](const std::string& name, const ParamValues& values) {
+        definition.check(name, definition.read(values));
       };
     return declared;
   }

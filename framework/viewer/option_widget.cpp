@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <limits>
 
 #include "viewer/panel.h"
 
@@ -36,7 +37,9 @@ bool optionWidget(const char* label, const OptionSpec& spec, double& value, cons
       // 64-bit: some limits (e.g. a ray budget) go far beyond int.
       long long v = static_cast<long long>(value);
       const long long lo = static_cast<long long>(spec.minValue);
-      const long long hi = static_cast<long long>(spec.maxValue);
+      // (A range past long long, the seed's, is cut at its end.)
+      const long long hi = spec.maxValue < 9.2e18 ? static_cast<long long>(spec.maxValue)
+                                                  : std::numeric_limits<long long>::max();
       const char* shown = format ? format : "%lld";
       if (hi - lo <= 64)
         changed = ImGui::SliderScalar(label, ImGuiDataType_S64, &v, &lo, &hi, shown, clamp);

@@ -5,6 +5,8 @@
 // render never sees a value it would refuse.
 #pragma once
 
+#include <type_traits>
+
 #include "render/parameters.h"
 
 namespace pathway {
@@ -14,12 +16,20 @@ namespace pathway {
 bool optionWidget(const char* label, const OptionSpec& spec, double& value,
                   const char* format = nullptr);
 
+// The same for a setting of another type: a number, or an enum a choice stands for.
 template <typename T>
 bool optionWidget(const char* label, const OptionSpec& spec, T& value,
                   const char* format = nullptr) {
-  double number = static_cast<double>(value);
+  double number;
+  if constexpr (std::is_enum_v<T>)
+    number = static_cast<double>(static_cast<int>(value));
+  else
+    number = static_cast<double>(value);
   if (!optionWidget(label, spec, number, format)) return false;
-  value = static_cast<T>(number);
+  if constexpr (std::is_enum_v<T>)
+    value = static_cast<T>(static_cast<int>(number));
+  else
+    value = static_cast<T>(number);
   return true;
 }
 

@@ -89,24 +89,12 @@ void integratorWidgets(ViewerState& state, int lane) {
 
 void samplingWidgets(ViewerState& state, const PanelStatus& status) {
   RenderSettings& settings = state.settings;
-  const std::vector<std::string> filters = filterTypeNames();
-  const int filter = static_cast<int>(settings.filter);
-  if (ImGui::BeginCombo("filter", filters[filter].c_str())) {
-    for (size_t i = 0; i < filters.size(); ++i)
-      if (ImGui::Selectable(filters[i].c_str(), static_cast<int>(i) == filter))
-        settings.filter = parseFilterType(filters[i]);
-    ImGui::EndCombo();
-  }
+  optionWidget("filter", setting::kFilter, settings.filter);
   optionWidget("filter radius", setting::kFilterRadius, settings.filterRadius,
                settings.filterRadius > 0.0f ? "%.2f px" : "natural");
-  const std::vector<std::string> samplers = samplerTypeNames();
-  const int sampler = static_cast<int>(settings.sampler);
-  if (ImGui::BeginCombo("sampler", samplers[sampler].c_str())) {
-    for (size_t i = 0; i < samplers.size(); ++i)
-      if (ImGui::Selectable(samplers[i].c_str(), static_cast<int>(i) == sampler))
-        settings.sampler = parseSamplerType(samplers[i]);
-    ImGui::EndCombo();
-  }
+  optionWidget("sampler", setting::kSampler, settings.sampler);
+  // Typed, not dragged: a seed is a name for a stream of numbers, not a quantity (and 64 bits do
+  // not fit the double a slider holds).
   ImGui::InputScalar("seed", ImGuiDataType_U64, &settings.seed);
   tooltip(setting::kSeed.help);
   optionWidget("spp target", kViewerSamplesPerPixel, settings.samplesPerPixel);

@@ -94,7 +94,7 @@ int runViewerBenchmark(const ViewerOptions& given) {
   for (int stage : {1, 3, 5})
     if (findStageIntegrator(stage, Variant::Reference))
       names.push_back(stageIntegratorName(stage, Variant::Reference));
-  if (names.empty()) names.push_back("stage1");  // a student handout has no references
+  if (names.empty()) names.push_back(setting::kIntegrator);  // a student handout has no references
   auto scene = LoadedScene::load(options.choices.scene, {options.choices.strictScene});
 
   std::printf(

@@ -83,7 +83,8 @@ void applyViewerDemo(const std::string& name, ViewerOptions& options) {
     options.balance = demo.balance;
     options.display = demo.display;
     options.makeReference = options.makeReference || demo.makeReference;
-    options.choices.filter = demo.filter.empty() ? filterTypeName(setting::kFilter) : demo.filter;
+    options.choices.filter =
+        demo.filter.empty() ? setting::kFilter.format(setting::kFilter.defaultValue) : demo.filter;
     options.spp = demo.spp > 0 ? demo.spp : kViewerSamplesPerPixel.defaultAs<uint32_t>();
     return;
   }
