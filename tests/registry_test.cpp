@@ -3,11 +3,13 @@
 // variants (a student's stage on the reference's earlier stages).
 #include <gtest/gtest.h>
 
+#include "chart/chart_spec.h"
 #include "core/error.h"
 #include "render/integrator_registry.h"
 #include "render/recipe_builder.h"
 #include "render/stage_catalog.h"
 #include "stage_under_test.h"
+#include "viewer/viewer_options.h"
 
 namespace pathway {
 namespace {
@@ -191,6 +193,33 @@ TEST(RecipeBuilder, StartsFromTheIntegratorsDeclarationsAndChecksWhatItIsGiven) 
   EXPECT_NE(
       errorOf([] { RecipeBuilder(test::stage(5)).param("rr-depth", "-1"); }).find("[0, 1000]"),
       std::string::npos);
+}
+
+// Every setting's default, including those a command derives with withDefault, lies in its
+// declared range (a default outside it would be refused by the very command that offers it).
+TEST(Settings, EveryDefaultIsInItsDeclaredRange) {
+  const OptionSpec* settings[] = {&setting::kWidth,
+                                  &setting::kHeight,
+                                  &setting::kSamplesPerPixel,
+                                  &setting::kSamplesPerPass,
+                                  &setting::kSeed,
+                                  &setting::kThreads,
+                                  &setting::kFilterRadius,
+                                  &setting::kExposure,
+                                  &setting::kTileSize,
+                                  &setting::kReferenceSamplesPerPixel,
+                                  &setting::kFilter,
+                                  &setting::kSampler,
+                                  &setting::kEarlierStages,
+                                  &setting::kChartWidth,
+                                  &setting::kChartMaxSpp,
+                                  &setting::kChartSeeds,
+                                  &setting::kReferenceFactor,
+                                  &kViewerSamplesPerPixel};
+  for (const OptionSpec* spec : settings)
+    EXPECT_TRUE(spec->accepts(spec->defaultValue)) << spec->name;
+  EXPECT_EQ(setting::kChartWidth.maxValue, setting::kWidth.maxValue);  // derived, not redeclared
+  EXPECT_EQ(kViewerSamplesPerPixel.maxValue, setting::kSamplesPerPixel.maxValue);
 }
 
 }  // namespace

@@ -52,20 +52,6 @@ TEST(StageDeclaration, StageFourRefusesAnExplodingRequestBeforeRendering) {
   EXPECT_NO_THROW(naive.check("stage4", ParamValues(naive.params)));
 }
 
-std::string kindName(OptionKind kind) {
-  switch (kind) {
-    case OptionKind::Integer:
-      return "integer";
-    case OptionKind::Real:
-      return "real";
-    case OptionKind::Toggle:
-      return "toggle";
-    case OptionKind::Choice:
-      return "choice";
-  }
-  return "?";
-}
-
 std::string trimmed(const std::string& text) {
   const size_t begin = text.find_first_not_of(' ');
   const size_t end = text.find_last_not_of(' ');
@@ -91,7 +77,7 @@ TEST(StageDeclaration, EachHeadersParameterTableMatchesItsDeclarations) {
     for (size_t i = 0; i < rows.size(); ++i) {
       const OptionSpec& spec = declared[i];
       EXPECT_EQ(rows[i][0], spec.name) << path;
-      EXPECT_EQ(rows[i][1], kindName(spec.kind)) << path << " " << spec.name;
+      EXPECT_EQ(rows[i][1], optionKindName(spec.kind)) << path << " " << spec.name;
       EXPECT_EQ(rows[i][2], spec.format(spec.defaultValue)) << path << " " << spec.name;
       EXPECT_EQ(rows[i][3], spec.describeRange()) << path << " " << spec.name;
     }

@@ -26,6 +26,11 @@ std::string joinOptions(const std::vector<std::string>& options) {
 
 }  // namespace
 
+const char* optionKindName(OptionKind kind) {
+  static const char* const names[] = {"integer", "real", "toggle", "choice"};
+  return names[static_cast<int>(kind)];
+}
+
 OptionSpec OptionSpec::integer(std::string name, long long defaultValue, double minValue,
                                double maxValue, std::string help) {
   return {std::move(name),

@@ -20,6 +20,9 @@ enum class OptionKind {
   Choice,   // one of `options`, by name; stored as the option's index
 };
 
+// "integer", "real", "toggle", "choice": as the stages' parameter tables write the kinds.
+const char* optionKindName(OptionKind kind);
+
 struct OptionSpec {
   std::string name;  // lower-case, dash-separated: "spp" (--spp), "ao-distance" (-p ao-distance=)
   OptionKind kind = OptionKind::Real;
