@@ -1,6 +1,7 @@
 #include "grade/file_comparison.h"
 
 #include <filesystem>
+#include <utility>
 
 #include "core/error.h"
 #include "grade/reference_comparison.h"
@@ -21,9 +22,10 @@ GradeSummary compareImageFiles(const std::string& image, const std::string& refe
   result.maxPoints = 1.0;
   try {
     const LoadedImage render = readImageFile(image);
-    const LoadedImage other = readImageFile(reference);
+    LoadedImage other = readImageFile(reference);
     if (other.metadata.grading) {
-      judgeAgainstReference(result, render, readGradingReference(reference), settings);
+      judgeAgainstReference(result, render, gradingReferenceOf(std::move(other), reference),
+                            settings);
     } else {
       // A plain render as the reference: each file's own per-pixel variance.
       result.comparison = compareWithReference(render.images, render.metadata,

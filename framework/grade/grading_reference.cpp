@@ -66,7 +66,10 @@ void writeGradingReference(const std::string& path, const GradingReference& refe
 }
 
 GradingReference readGradingReference(const std::string& path) {
-  LoadedImage loaded = readImageFile(path);  // names the file when it is missing or broken
+  return gradingReferenceOf(readImageFile(path), path);  // names the file when it is broken
+}
+
+GradingReference gradingReferenceOf(LoadedImage loaded, const std::string& path) {
   if (!loaded.metadata.grading)
     throw PathwayError(path + ": not a grading reference (no grading record in its metadata)");
   GradingReference reference;

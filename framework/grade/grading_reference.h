@@ -39,5 +39,7 @@ void writeGradingReference(const std::string& path, const GradingReference& refe
 // Throws PathwayError naming the file: missing, unreadable or truncated, or not a grading
 // reference (no tileVariance layer or replicate count).
 GradingReference readGradingReference(const std::string& path);
+// The same from a file already read (`path` names it in messages).
+GradingReference gradingReferenceOf(LoadedImage loaded, const std::string& path);
 
 }  // namespace pathway

@@ -76,19 +76,24 @@ RenderSession::RenderSession(const RayTracer& tracer, const Camera& camera,
 
 RenderSession::~RenderSession() = default;
 
+std::vector<TodoRecord> RenderSession::todos() const {
+  std::vector<TodoRecord> all = constructionTodos_.records();
+  for (const TodoRecord& todo : renderer_->todos().records()) {
+    bool known = false;
+    for (const TodoRecord& seen : all)
+      known = known || (seen.file == todo.file && seen.line == todo.line);
+    if (!known) all.push_back(todo);
+  }
+  return all;
+}
+
 RenderResult RenderSession::develop() {
   RenderResult result;
   const Film& film = renderer_->film();
   film.developAll(result.images.color, result.images.variance, result.images.weight,
                   &result.unresolvedPixels);
   result.stats = renderer_->stats();
-  result.todos = constructionTodos_.records();
-  for (const TodoRecord& todo : renderer_->todos().records()) {
-    bool known = false;
-    for (const TodoRecord& seen : result.todos)
-      known = known || (seen.file == todo.file && seen.line == todo.line);
-    if (!known) result.todos.push_back(todo);
-  }
+  result.todos = todos();
   result.metadata = renderMetadata(tracer_.scene().sourcePath, sceneHash_, info_.stage, recipe_,
                                    result.stats, result.unresolvedPixels, result.todos);
   return result;

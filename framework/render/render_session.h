@@ -50,6 +50,10 @@ class RenderSession {
   const IntegratorInfo& integrator() const { return info_; }
   const RenderRecipe& recipe() const { return recipe_; }  // with every parameter value filled in
 
+  // The unfinished stage code this render has run so far: while its integrator was built, and in
+  // its tiles.
+  std::vector<TodoRecord> todos() const;
+
   // The film so far, developed, with counters, the TODOs that ran and metadata (merges the
   // renderer's film).
   RenderResult develop();

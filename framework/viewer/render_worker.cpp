@@ -174,7 +174,7 @@ void RenderWorker::renderPass(size_t index) {
   passStart_ = Clock::now().time_since_epoch().count();
   try {
     completed = lane.session->renderer().renderPass(&cancel_);
-    lane.todos = lane.session->renderer().todos().records();
+    lane.todos = lane.session->todos();
   } catch (const std::exception& error) {  // a stage that throws must not take the viewer down
     lane.error = error.what();
     lane.session.reset();
