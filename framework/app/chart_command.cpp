@@ -32,6 +32,7 @@ struct ChartOptions {
   std::string out = "chart";
   int threads = setting::kThreads.defaultAs<int>();
   bool fresh = false;
+  bool singleRay = false;
   bool draw = true;
   bool quiet = false;
   std::string filterProfiles;  // a CSV path: tabulate the filters and stop
@@ -64,6 +65,7 @@ int run(ChartOptions& options) {
   runOptions.folder = options.out;
   runOptions.threads = options.threads;
   runOptions.fresh = options.fresh;
+  if (options.singleRay) runOptions.tracing = ReferenceTracing::SingleRay;
   runOptions.progress = [&](double fraction, const std::string& what) {
     progress.update(fraction, what.c_str());
   };
@@ -118,6 +120,9 @@ Command addChartCommand(CLI::App& app) {
   chart->add_flag("--no-reference{false}", options->spec.withReference,
                   "Measure time and rays only (no reference, no errors)");
   chart->add_flag("--fresh", options->fresh, "Render everything again, ignoring the cache");
+  chart->add_flag("--single-ray", options->singleRay,
+                  "Render the references with stageN@ref, one ray at a time, even where the "
+                  "faster stageN@fast exists");
   chart->add_flag("--no-draw{false}", options->draw, "Write the data only, no PNG/SVG");
   chart->add_flag("-q,--quiet", options->quiet, "No progress bar or table");
   chart->add_option("--filter-profiles", options->filterProfiles,

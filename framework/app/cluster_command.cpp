@@ -37,6 +37,7 @@ struct ClusterRenderOptions {
   float exposure = setting::kExposure.defaultAs<float>();
   std::vector<std::string> outputs;
   std::vector<std::string> renderArguments;  // the scene and render options, after --
+  bool singleRay = false;  // keep stageN@ref rather than its wavefront version stageN@fast
 };
 
 struct ClusterGradeOptions {
@@ -152,14 +153,16 @@ int runClusterRender(const ClusterRenderOptions& options) {
   fs::create_directories(work / "parts");
   fs::create_directories(work / "logs");
 
+  const std::vector<std::string> renderArguments =
+      options.singleRay ? options.renderArguments : withFastestReference(options.renderArguments);
   // Every task gets the same render: check it here once, before anything is submitted.
   RenderPartCommand check;
-  check.renderArguments = options.renderArguments;
+  check.renderArguments = renderArguments;
   check.spp = options.spp;
   check.sampleEnd = options.spp;
   check.checkOnly = true;
   check.output = (work / "parts/check.exr").string();
-  checkBeforeSubmitting(commandLine(check), work, "render", options.renderArguments);
+  checkBeforeSubmitting(commandLine(check), work, "render", renderArguments);
 
   const SchedulerOptions scheduler = schedulerOptions(options.job);
   ClusterJob job;
@@ -171,7 +174,7 @@ int runClusterRender(const ClusterRenderOptions& options) {
   std::vector<std::string> ranges;  // of each task
   for (uint32_t i = 0; i < tasks; ++i) {
     RenderPartCommand part;
-    part.renderArguments = options.renderArguments;
+    part.renderArguments = renderArguments;
     part.spp = options.spp;
     part.sampleBegin = static_cast<uint32_t>(uint64_t(options.spp) * i / tasks);
     part.sampleEnd = static_cast<uint32_t>(uint64_t(options.spp) * (i + 1) / tasks);
@@ -302,6 +305,9 @@ Command addClusterCommand(CLI::App& app) {
   addOption(*renderCommand, setting::kExposure, render->exposure);
   renderCommand->add_option("-o,--output", render->outputs, "The merged image(s): .exr or .png")
       ->required();
+  renderCommand->add_flag("--single-ray", render->singleRay,
+                          "Keep -i stageN@ref (one ray at a time) rather than its faster "
+                          "wavefront version stageN@fast, which the tasks render by default");
   renderCommand->footer("After --: the scene and the options of pathway render.");
 
   CLI::App* gradeCommand = cluster->add_subcommand(

@@ -118,6 +118,9 @@ Command addGradeCommand(CLI::App& app) {
                     "repeatable)");
   grade->add_flag("--grade-reference", options->gradeReference,
                   "Grade the reference stages instead of yours (false-alarm checks)");
+  grade->add_flag("--single-ray", options->singleRay,
+                  "Render references (--make-references, --calibrate, --grade-reference) with "
+                  "stageN@ref, one ray at a time, even where the faster stageN@fast exists");
   grade->add_flag("--list-cases", options->listCases,
                   "List the grading cases: scene, settings, what each is there to catch");
   grade->add_flag("--make-references", options->makeReferences,

@@ -20,8 +20,9 @@ int calibrateMode(const GradeOptions& options) {
     std::vector<uint32_t> spps = options.calibrationSpp;
     if (spps.empty()) spps.push_back(c->spp);
     for (uint32_t spp : spps) {
-      const CalibrationResult r = calibrate(*c, spp, variant, options.calibrate, options.seed,
-                                            options.references, kScenesDir, settings);
+      const CalibrationResult r =
+          calibrate(*c, spp, variant, options.referenceTracing(), options.calibrate, options.seed,
+                    options.references, kScenesDir, settings);
       std::string seeds;  // the first few, to look at again with --seed
       for (size_t i = 0; i < r.failedSeeds.size() && i < 5; ++i)
         seeds += (i ? "," : "  seeds ") + std::to_string(r.failedSeeds[i]);

@@ -23,11 +23,12 @@ int makeReferencesMode(const GradeOptions& options) {
     if (!scene) scene = std::make_unique<Scene>(loadScene(kScenesDir + "/" + c->scene));
     const RayTracer tracer(*scene);
     const bool terminal = !options.quiet && ::isatty(STDERR_FILENO);
-    const GradingReference reference = makeGradingReference(*c, tracer, [&](int done) {
-      if (terminal)
-        std::fprintf(stderr, "\r%-36s %2d/%d replicates", c->id().c_str(), done,
-                     kReferenceReplicates);
-    });
+    const GradingReference reference =
+        makeGradingReference(*c, tracer, options.referenceTracing(), [&](int done) {
+          if (terminal)
+            std::fprintf(stderr, "\r%-36s %2d/%d replicates", c->id().c_str(), done,
+                         kReferenceReplicates);
+        });
     const std::string path = options.references + "/" + c->referenceFile();
     writeGradingReference(path, reference);
     if (!options.quiet)

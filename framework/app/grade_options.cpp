@@ -23,6 +23,7 @@ GradingRun gradingRun(const GradeOptions& options) {
   run.cases = selectedCases(options);
   run.together = options.together;
   run.gradeReference = options.gradeReference;
+  run.tracing = options.referenceTracing();
   run.stageLibraries = options.stageLibraries;
   run.references = options.references;
   run.scenes = kScenesDir;

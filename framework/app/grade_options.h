@@ -19,6 +19,7 @@ struct GradeOptions {
   std::vector<std::string> cases;
   bool together = false;
   bool gradeReference = false;
+  bool singleRay = false;  // references one ray at a time (stageN@ref), not stageN@fast
   std::vector<std::string> stageLibraries;
   std::string references = kScenesDir + "/references";
   std::string report = "grade-report";
@@ -35,6 +36,10 @@ struct GradeOptions {
   int calibrate = 0;                     // > 0: grade this many seeds per case, in this process
   std::vector<uint32_t> calibrationSpp;  // empty: each case's own
   bool quiet = false;
+
+  ReferenceTracing referenceTracing() const {
+    return singleRay ? ReferenceTracing::SingleRay : ReferenceTracing::Fastest;
+  }
 };
 
 // The cases named with --case; else those of the --stage options; else every case.

@@ -184,9 +184,14 @@ ChartData runChart(const ChartSpec& spec, const ChartRunOptions& options) {
     loaded.height = loaded.scene.imageHeight(spec.width);
   }
 
-  auto recipeOf = [&](const ChartConfig& config, uint32_t spp, uint64_t seed) {
+  // A reference renders its configuration with the wavefront version of a reference stage where
+  // there is one (options.tracing).
+  auto recipeOf = [&](const ChartConfig& config, uint32_t spp, uint64_t seed,
+                      bool reference = false) {
     const ChartScene& scene = scenes.at(spec.sceneOf(config));
-    return RenderRecipe(config.choices.builder()
+    RenderChoices choices = config.choices;
+    if (reference) choices.integrator = referenceIntegratorFor(choices.integrator, options.tracing);
+    return RenderRecipe(choices.builder()
                             .size(scene.width, scene.height)
                             .spp(spp, samplesPerProgressPass(spp))
                             .seed(seed)
@@ -225,7 +230,7 @@ ChartData runChart(const ChartSpec& spec, const ChartRunOptions& options) {
       reference.spp = std::max(reference.spp, spec.referenceFactor * spec.maxSppOf(config));
     }
     for (auto& [label, reference] : planned) {
-      const RenderRecipe recipe = recipeOf(*reference.config, reference.spp, kReferenceSeed);
+      const RenderRecipe recipe = recipeOf(*reference.config, reference.spp, kReferenceSeed, true);
       reference.key = keyOf(*reference.config, recipe, "none");
       const fs::path base = folder / "cache" / ("reference-" + reference.key);
       reference.exrPath = base.string() + ".exr";

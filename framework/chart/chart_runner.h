@@ -12,6 +12,7 @@
 #include "chart/chart_spec.h"
 #include "chart/image_error.h"
 #include "core/ray_counters.h"
+#include "render/integrator_registry.h"
 
 namespace pathway {
 
@@ -44,6 +45,7 @@ struct ChartRunOptions {
   std::string folder;  // the chart's folder: runs.csv and the cache/ beneath it
   int threads = 0;     // 0: all cores
   bool fresh = false;  // ignore what is cached and render everything again
+  ReferenceTracing tracing = ReferenceTracing::Fastest;  // how the references render
   // Progress: the fraction of the planned samples done, and what is rendering.
   std::function<void(double, const std::string&)> progress;
 };

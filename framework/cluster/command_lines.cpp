@@ -1,5 +1,6 @@
 #include "cluster/command_lines.h"
 
+#include "render/integrator_registry.h"
 #include "render/render_settings.h"
 
 namespace pathway {
@@ -57,6 +58,20 @@ std::vector<std::string> ClassTableCommand::toArguments() const {
   std::vector<std::string> arguments = {"grade"};
   if (quiet) arguments.push_back(kQuiet);
   append(arguments, {"--submissions", submissions, "--output", output, "--table-only"});
+  return arguments;
+}
+
+std::vector<std::string> withFastestReference(std::vector<std::string> arguments) {
+  const std::string joined = "--integrator=";
+  for (size_t i = 0; i < arguments.size(); ++i) {
+    std::string& word = arguments[i];
+    if ((word == "-i" || word == "--integrator") && i + 1 < arguments.size()) {
+      arguments[i + 1] = referenceIntegratorFor(arguments[i + 1], ReferenceTracing::Fastest);
+      ++i;
+    } else if (word.rfind(joined, 0) == 0) {
+      word = joined + referenceIntegratorFor(word.substr(joined.size()), ReferenceTracing::Fastest);
+    }
+  }
   return arguments;
 }
 

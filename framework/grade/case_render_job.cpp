@@ -25,6 +25,7 @@ constexpr const char* kCaseFlag = "--case";                       // per case, i
 constexpr const char* kTimeLimitFlag = "--time-limit";            // ... each followed by its limit
 constexpr const char* kTogetherFlag = "--together";               // a toggle (present or not)
 constexpr const char* kGradeReferenceFlag = "--grade-reference";  // a toggle (present or not)
+constexpr const char* kSingleRayFlag = "--single-ray";            // a toggle (present or not)
 constexpr const char* kStagesLibraryFlag = "--stages-library";    // per library, in order
 
 // The shortest text that reads back as the same double (15 -> "15", 17.25 -> "17.25").
@@ -56,6 +57,7 @@ std::vector<std::string> CaseRenderJob::toArguments() const {
                      {kCaseFlag, c.gradingCase->id(), kTimeLimitFlag, exactText(c.timeLimit)});
   if (together) arguments.push_back(kTogetherFlag);
   if (gradeReference) arguments.push_back(kGradeReferenceFlag);
+  if (singleRay) arguments.push_back(kSingleRayFlag);
   for (const std::string& library : stageLibraries)
     arguments.insert(arguments.end(), {kStagesLibraryFlag, library});
   return arguments;
@@ -107,6 +109,9 @@ CaseRenderJob CaseRenderJob::fromArguments(const std::vector<std::string>& argum
     } else if (flag == kGradeReferenceFlag) {
       once();
       job.gradeReference = true;
+    } else if (flag == kSingleRayFlag) {
+      once();
+      job.singleRay = true;
     } else if (flag == kStagesLibraryFlag) {
       job.stageLibraries.push_back(value());
     } else {
@@ -134,7 +139,7 @@ bool operator==(const CaseRenderJob::Case& a, const CaseRenderJob::Case& b) {
 bool operator==(const CaseRenderJob& a, const CaseRenderJob& b) {
   return a.cases == b.cases && a.output == b.output && a.scenes == b.scenes && a.seed == b.seed &&
          a.together == b.together && a.gradeReference == b.gradeReference &&
-         a.stageLibraries == b.stageLibraries;
+         a.singleRay == b.singleRay && a.stageLibraries == b.stageLibraries;
 }
 
 void runCaseRenderJob(const CaseRenderJob& job) {
@@ -154,7 +159,8 @@ void runCaseRenderJob(const CaseRenderJob& job) {
                          " (does its file end with its registerStage line?)");
     const RenderRecipe recipe =
         gradingCase.recipe(job.gradeReference ? Variant::Reference : Variant::Student,
-                           job.together ? EarlierStages::Own : EarlierStages::Reference, job.seed);
+                           job.together ? EarlierStages::Own : EarlierStages::Reference, job.seed,
+                           job.singleRay ? ReferenceTracing::SingleRay : ReferenceTracing::Fastest);
     const Scene scene = loadScene(job.scenes + "/" + gradingCase.scene);
     const RayTracer tracer(scene);
     const RenderResult result = runRender(tracer, recipe);

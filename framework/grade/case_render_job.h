@@ -29,6 +29,7 @@ struct CaseRenderJob {
   uint64_t seed = kStudentSeed;
   bool together = false;        // the student's earlier stages instead of the reference's
   bool gradeReference = false;  // the reference stages themselves instead of the student's
+  bool singleRay = false;       // with gradeReference: stageN@ref even where stageN@fast exists
   // Stage libraries (render/stage_library.h) loaded before rendering, in this order. The parent
   // gives absolute paths: the child may resolve a relative one differently.
   std::vector<std::string> stageLibraries;

@@ -21,14 +21,15 @@ constexpr int kEscapeRaysPerSide = 4;
 constexpr uint64_t kPatternSeed = kReferenceSeed + 500000;
 
 Image renderVariant(const GradingCase& gradingCase, const RayTracer& tracer,
-                    const std::map<std::string, std::string>& params, uint64_t seed,
-                    Vec2 imageMoved = Vec2(0.0f)) {
+                    ReferenceTracing tracing, const std::map<std::string, std::string>& params,
+                    uint64_t seed, Vec2 imageMoved = Vec2(0.0f)) {
   GradingCase variant = gradingCase;
   for (const auto& [name, value] : params) variant.params[name] = value;
   variant.spp *= kPatternSppFactor;
   const Camera camera =
       Camera(tracer.scene(), variant.width, variant.height).withImageMoved(imageMoved);
-  return runRender(tracer, camera, variant.recipe(Variant::Reference, EarlierStages::Own, seed))
+  return runRender(tracer, camera,
+                   variant.recipe(Variant::Reference, EarlierStages::Own, seed, tracing))
       .images.color;
 }
 
@@ -76,7 +77,8 @@ Image tileAveraged(const Image& image, int tileSize) {
 std::map<std::string, Image> makeDifferencePatterns(const GradingCase& gradingCase,
                                                     const RayTracer& tracer,
                                                     const Image& referenceMean,
-                                                    const Image& renderVariance) {
+                                                    const Image& renderVariance,
+                                                    ReferenceTracing tracing) {
   std::map<std::string, Image> patterns;
   if (!renderVariance.pixels.empty()) patterns[pattern::kRenderVariance] = renderVariance;
   patterns[pattern::kEscaped] = escapedBackground(gradingCase, tracer);
@@ -86,23 +88,25 @@ std::map<std::string, Image> makeDifferencePatterns(const GradingCase& gradingCa
     // at the scale where filters act (a pixel-level gradient misreads fine stripes).
     const float half = 0.5f;
     patterns[pattern::kMovedRight] =
-        difference(renderVariant(gradingCase, tracer, {}, seed, Vec2(half, 0.0f)),
-                   renderVariant(gradingCase, tracer, {}, seed + 1, Vec2(-half, 0.0f)));
+        difference(renderVariant(gradingCase, tracer, tracing, {}, seed, Vec2(half, 0.0f)),
+                   renderVariant(gradingCase, tracer, tracing, {}, seed + 1, Vec2(-half, 0.0f)));
     patterns[pattern::kMovedDown] =
-        difference(renderVariant(gradingCase, tracer, {}, seed + 2, Vec2(0.0f, half)),
-                   renderVariant(gradingCase, tracer, {}, seed + 3, Vec2(0.0f, -half)));
+        difference(renderVariant(gradingCase, tracer, tracing, {}, seed + 2, Vec2(0.0f, half)),
+                   renderVariant(gradingCase, tracer, tracing, {}, seed + 3, Vec2(0.0f, -half)));
     // The filter a quarter wider minus a fifth narrower: its support, to first order in ln r.
     const float radius = gradingCase.filterRadius > 0.0f ? gradingCase.filterRadius
                                                          : naturalFilterRadius(gradingCase.filter);
     GradingCase wider = gradingCase, narrower = gradingCase;
     wider.filterRadius = 1.25f * radius;
     narrower.filterRadius = 0.8f * radius;
-    patterns[pattern::kWiderFilter] = difference(renderVariant(wider, tracer, {}, seed + 4),
-                                                 renderVariant(narrower, tracer, {}, seed + 5));
+    patterns[pattern::kWiderFilter] =
+        difference(renderVariant(wider, tracer, tracing, {}, seed + 4),
+                   renderVariant(narrower, tracer, tracing, {}, seed + 5));
   } else if (gradingCase.stage == 2 || gradingCase.stage == 3) {
     // The smallest AO distance there is: nothing blocks such a ray, so this is the image without
     // occlusion (1 on every surface, the background elsewhere).
-    const Image unoccluded = renderVariant(gradingCase, tracer, {{"ao-distance", "1e-6"}}, seed);
+    const Image unoccluded =
+        renderVariant(gradingCase, tracer, tracing, {{"ao-distance", "1e-6"}}, seed);
     patterns[pattern::kOccluded] = difference(unoccluded, referenceMean);
     // The same AO with longer rays: how the image changes when the AO distance is misread.
     const ParamValues values =
@@ -110,19 +114,21 @@ std::map<std::string, Image> makeDifferencePatterns(const GradingCase& gradingCa
     const double d = gradingCase.stage == 2 ? stage2().read(values).aoDistance
                                             : stage3().read(values).aoDistance;
     if (d < 1e5) {
-      patterns[pattern::kLongerRays] = difference(
-          renderVariant(gradingCase, tracer, {{"ao-distance", std::to_string(2.0 * d)}}, seed + 1),
-          referenceMean);
+      patterns[pattern::kLongerRays] =
+          difference(renderVariant(gradingCase, tracer, tracing,
+                                   {{"ao-distance", std::to_string(2.0 * d)}}, seed + 1),
+                     referenceMean);
       patterns[pattern::kUnlimitedRays] = difference(
-          renderVariant(gradingCase, tracer, {{"ao-distance", "1e6"}}, seed + 2), referenceMean);
+          renderVariant(gradingCase, tracer, tracing, {{"ao-distance", "1e6"}}, seed + 2),
+          referenceMean);
     }
   } else if (gradingCase.stage == 4 || gradingCase.stage == 5) {
     const std::string depth = gradingCase.stage == 4 ? "depth" : "max-depth";
     // NEE leaves the expected image as it is and makes these two far less noisy.
     std::map<std::string, std::string> emitted = {{depth, "0"}}, direct = {{depth, "1"}};
     if (gradingCase.stage == 5) emitted["nee"] = direct["nee"] = "on";
-    const Image m0 = renderVariant(gradingCase, tracer, emitted, seed);
-    const Image m1 = renderVariant(gradingCase, tracer, direct, seed + 1);
+    const Image m0 = renderVariant(gradingCase, tracer, tracing, emitted, seed);
+    const Image m1 = renderVariant(gradingCase, tracer, tracing, direct, seed + 1);
     patterns[pattern::kDirect] = difference(m1, m0);
     const ParamValues params =
         gradingCase.recipe(Variant::Reference, EarlierStages::Own, seed).params;
@@ -141,11 +147,11 @@ std::map<std::string, Image> makeDifferencePatterns(const GradingCase& gradingCa
           if (other != emissive[k]) alone.materials[other].emission = Color(0.0f);
         const RayTracer aloneTracer(alone);
         const uint64_t seeds = seed + 2 + 3 * k;
-        const Image emittedAlone = renderVariant(gradingCase, aloneTracer, emitted, seeds);
-        patterns[pattern::directFrom(k)] =
-            difference(renderVariant(gradingCase, aloneTracer, direct, seeds + 1), emittedAlone);
-        patterns[pattern::litFrom(k)] =
-            difference(renderVariant(gradingCase, aloneTracer, {}, seeds + 2), emittedAlone);
+        const Image emittedAlone = renderVariant(gradingCase, aloneTracer, tracing, emitted, seeds);
+        patterns[pattern::directFrom(k)] = difference(
+            renderVariant(gradingCase, aloneTracer, tracing, direct, seeds + 1), emittedAlone);
+        patterns[pattern::litFrom(k)] = difference(
+            renderVariant(gradingCase, aloneTracer, tracing, {}, seeds + 2), emittedAlone);
       }
     }
   }

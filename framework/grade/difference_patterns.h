@@ -25,6 +25,7 @@ namespace pathway {
 std::map<std::string, Image> makeDifferencePatterns(const GradingCase& gradingCase,
                                                     const RayTracer& tracer,
                                                     const Image& referenceMean,
-                                                    const Image& renderVariance);
+                                                    const Image& renderVariance,
+                                                    ReferenceTracing tracing);
 
 }  // namespace pathway

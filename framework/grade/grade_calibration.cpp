@@ -12,8 +12,9 @@
 namespace pathway {
 
 CalibrationResult calibrate(const GradingCase& gradingCase, uint32_t spp, Variant variant,
-                            int seeds, uint64_t firstSeed, const std::string& referencesFolder,
-                            const std::string& scenesFolder, const ComparisonSettings& settings,
+                            ReferenceTracing tracing, int seeds, uint64_t firstSeed,
+                            const std::string& referencesFolder, const std::string& scenesFolder,
+                            const ComparisonSettings& settings,
                             const std::function<void(int)>& onSeed) {
   GradingCase atSpp = gradingCase;
   atSpp.spp = spp;
@@ -22,7 +23,7 @@ CalibrationResult calibrate(const GradingCase& gradingCase, uint32_t spp, Varian
   const GradingReference reference =
       spp == gradingCase.spp
           ? readGradingReference(referencesFolder + "/" + gradingCase.referenceFile())
-          : makeGradingReference(atSpp, tracer);
+          : makeGradingReference(atSpp, tracer, tracing);
 
   CalibrationResult result;
   result.caseId = gradingCase.id();
@@ -30,7 +31,7 @@ CalibrationResult calibrate(const GradingCase& gradingCase, uint32_t spp, Varian
   result.seeds = seeds;
   const auto start = std::chrono::steady_clock::now();
   auto passes = [&](uint64_t seed, Comparison* comparison) {
-    const RenderRecipe recipe = atSpp.recipe(variant, EarlierStages::Reference, seed);
+    const RenderRecipe recipe = atSpp.recipe(variant, EarlierStages::Reference, seed, tracing);
     const RenderResult render = runRender(tracer, recipe);
     *comparison = compareWithReference(render.images, render.metadata, reference, settings);
     return comparison->passed(settings);

@@ -26,12 +26,13 @@ struct CalibrationResult {
   double seconds = 0.0;               // rendering and grading, references excluded
 };
 
-// Grades `variant`'s stage (the student's: a loaded stage library) on `gradingCase` at `spp`
-// with seeds firstSeed, firstSeed + 1, ... The reference comes from `referencesFolder` when `spp`
-// is the case's own, else it is rendered first.
+// Grades `variant`'s stage (the reference traced as `tracing` says) (the student's: a loaded stage
+// library) on `gradingCase` at `spp` with seeds firstSeed, firstSeed + 1, ... The reference comes
+// from `referencesFolder` when `spp` is the case's own, else it is rendered first.
 CalibrationResult calibrate(const GradingCase& gradingCase, uint32_t spp, Variant variant,
-                            int seeds, uint64_t firstSeed, const std::string& referencesFolder,
-                            const std::string& scenesFolder, const ComparisonSettings& settings,
+                            ReferenceTracing tracing, int seeds, uint64_t firstSeed,
+                            const std::string& referencesFolder, const std::string& scenesFolder,
+                            const ComparisonSettings& settings,
                             const std::function<void(int)>& onSeed = {});
 
 }  // namespace pathway

@@ -145,8 +145,11 @@ std::vector<GradingCase> declareCases() {
 
 }  // namespace
 
-RenderRecipe GradingCase::recipe(Variant variant, EarlierStages earlier, uint64_t seed) const {
+RenderRecipe GradingCase::recipe(Variant variant, EarlierStages earlier, uint64_t seed,
+                                 ReferenceTracing tracing) const {
   const IntegratorInfo* info = findStageIntegrator(stage, variant);
+  if (info && variant == Variant::Reference)
+    info = &findIntegrator(referenceIntegratorName(stage, tracing));
   if (!info)
     throw PathwayError(variant == Variant::Reference
                            ? referenceStageMissing(stage)

@@ -10,6 +10,7 @@
 
 #include "core/variant.h"
 #include "film/pixel_filter.h"
+#include "render/integrator_registry.h"
 #include "render/render_session.h"
 
 namespace pathway {
@@ -40,8 +41,11 @@ struct GradingCase {
   std::string id() const { return "stage" + std::to_string(stage) + "-" + name; }
   // The reference file's name under the references folder.
   std::string referenceFile() const { return id() + ".exr"; }
-  // The recipe for this case: the stage in `variant`, earlier stages from `earlier`.
-  RenderRecipe recipe(Variant variant, EarlierStages earlier, uint64_t seed) const;
+  // The recipe for this case: the stage in `variant`, earlier stages from `earlier`. The
+  // reference stage renders with its wavefront version where it has one, unless `tracing` is
+  // SingleRay (render/integrator_registry.h).
+  RenderRecipe recipe(Variant variant, EarlierStages earlier, uint64_t seed,
+                      ReferenceTracing tracing = ReferenceTracing::Fastest) const;
 };
 
 const std::vector<GradingCase>& gradingCases();

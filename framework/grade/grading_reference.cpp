@@ -7,6 +7,7 @@
 
 namespace pathway {
 GradingReference makeGradingReference(const GradingCase& gradingCase, const RayTracer& tracer,
+                                      ReferenceTracing tracing,
                                       const std::function<void(int)>& onReplicate) {
   std::vector<Image> replicates;
   Image ownVariance;  // the mean of the replicates' own per-pixel variance estimates
@@ -14,7 +15,7 @@ GradingReference makeGradingReference(const GradingCase& gradingCase, const RayT
   double seconds = 0.0, rays = 0.0;
   for (int i = 0; i < kReferenceReplicates; ++i) {
     const RenderRecipe recipe =
-        gradingCase.recipe(Variant::Reference, EarlierStages::Own, kReferenceSeed + i);
+        gradingCase.recipe(Variant::Reference, EarlierStages::Own, kReferenceSeed + i, tracing);
     RenderResult result = runRender(tracer, recipe);
     if (result.stats.counters.invalidSamples > 0)
       throw PathwayError(gradingCase.id() + ": the reference dropped " +
@@ -37,7 +38,8 @@ GradingReference makeGradingReference(const GradingCase& gradingCase, const RayT
     reference.mean.pixels[p] = Color(sum / double(replicates.size()));
   }
   reference.tileVariance = replicateTileVariance(replicates, gradingCase.tileSize);
-  reference.patterns = makeDifferencePatterns(gradingCase, tracer, reference.mean, ownVariance);
+  reference.patterns =
+      makeDifferencePatterns(gradingCase, tracer, reference.mean, ownVariance, tracing);
   GradingRecord& record = reference.record;
   record.caseId = gradingCase.id();
   record.blockSize = ComparisonSettings().omnibusBlockSize;

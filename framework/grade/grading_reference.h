@@ -30,9 +30,11 @@ struct GradingReference {
   std::map<std::string, Image> patterns;
 };
 
-// Renders the case's replicates with the reference stage; `onReplicate(done)` reports progress.
-// Throws PathwayError when the reference is not built in or a replicate drops invalid samples.
+// Renders the case's replicates with the reference stage (traced as `tracing` says);
+// `onReplicate(done)` reports progress. Throws PathwayError when the reference is not built in or
+// a replicate drops invalid samples.
 GradingReference makeGradingReference(const GradingCase& gradingCase, const RayTracer& tracer,
+                                      ReferenceTracing tracing = ReferenceTracing::Fastest,
                                       const std::function<void(int)>& onReplicate = {});
 
 void writeGradingReference(const std::string& path, const GradingReference& reference);

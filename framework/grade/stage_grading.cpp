@@ -78,6 +78,7 @@ std::vector<RenderOutcome> renderInChildren(const std::vector<CaseRenderJob::Cas
   job.seed = seed;
   job.together = run.together;
   job.gradeReference = run.gradeReference;
+  job.singleRay = run.tracing == ReferenceTracing::SingleRay;
   for (const std::string& library : run.stageLibraries)
     job.stageLibraries.push_back(fs::absolute(library).string());
   for (size_t next = 0; next < cases.size();) {

@@ -26,6 +26,8 @@ struct GradingRun {
   std::vector<const GradingCase*> cases;
   bool together = false;        // the student's earlier stages instead of the reference's
   bool gradeReference = false;  // grade the reference stages themselves (calibration, tests)
+  // How references render: their wavefront versions where they exist, or one ray at a time.
+  ReferenceTracing tracing = ReferenceTracing::Fastest;
   // Student stages built on their own (render/stage_library.h), loaded over the built-in ones.
   std::vector<std::string> stageLibraries;
   std::string references;    // folder of the reference files

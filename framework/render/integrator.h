@@ -32,6 +32,11 @@ class RenderContext {
   // Radiance of rays that leave the scene.
   const Color& background() const { return tracer_.scene().background; }
 
+  // For wavefront integrators (render/wavefront.h), which trace packets of rays: the tracer and
+  // the counters its packet queries count in.
+  const RayTracer& tracer() const { return tracer_; }
+  RayCounters& counters() const { return counters_; }
+
  private:
   const RayTracer& tracer_;
   RayCounters& counters_;

@@ -38,10 +38,14 @@ const std::vector<std::string>& registrationLog() {
   return log();
 }
 
-bool registerStageIntegrator(int stage, Variant variant, IntegratorFactory factory) {
+namespace {
+
+constexpr const char* kWavefrontSuffix = "@fast";
+
+IntegratorInfo stageInfo(int stage, Variant variant, std::string name, IntegratorFactory factory) {
   const StageDeclaration& declaration = stageDeclaration(stage);
   IntegratorInfo info;
-  info.name = stageIntegratorName(stage, variant);
+  info.name = std::move(name);
   info.stage = stage;
   info.variant = variant;
   info.summary = declaration.summary;
@@ -52,7 +56,37 @@ bool registerStageIntegrator(int stage, Variant variant, IntegratorFactory facto
     if (check) check(name, setup.params);
     return factory(setup);
   };
+  return info;
+}
+
+}  // namespace
+
+bool registerStageIntegrator(int stage, Variant variant, IntegratorFactory factory) {
+  return registerIntegrator(
+      stageInfo(stage, variant, stageIntegratorName(stage, variant), std::move(factory)));
+}
+
+bool registerWavefrontStageIntegrator(int stage, IntegratorFactory factory) {
+  IntegratorInfo info =
+      stageInfo(stage, Variant::Reference, "stage" + std::to_string(stage) + kWavefrontSuffix,
+                std::move(factory));
+  info.wavefront = true;
+  info.summary += " (wavefront: 16-ray packets, the reference's estimator)";
   return registerIntegrator(std::move(info));
+}
+
+std::string referenceIntegratorName(int stage, ReferenceTracing tracing) {
+  const std::string fast = "stage" + std::to_string(stage) + kWavefrontSuffix;
+  if (tracing == ReferenceTracing::Fastest && registry().count(fast)) return fast;
+  return stageIntegratorName(stage, Variant::Reference);
+}
+
+std::string referenceIntegratorFor(const std::string& name, ReferenceTracing tracing) {
+  auto it = registry().find(name);
+  if (it == registry().end() || it->second.stage == 0 || it->second.wavefront ||
+      it->second.variant != Variant::Reference)
+    return name;
+  return referenceIntegratorName(it->second.stage, tracing);
 }
 
 const IntegratorInfo& findIntegrator(const std::string& name) {
@@ -62,7 +96,11 @@ const IntegratorInfo& findIntegrator(const std::string& name) {
   for (const IntegratorInfo* info : allIntegrators())
     known += (known.empty() ? "" : ", ") + info->name;
   const std::string& why = referenceStagesProblem();
-  const bool reference = name.size() > 4 && name.compare(name.size() - 4, 4, "@ref") == 0;
+  auto endsWith = [&name](const std::string& suffix) {
+    return name.size() > suffix.size() &&
+           name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+  };
+  const bool reference = endsWith("@ref") || endsWith(kWavefrontSuffix);
   throw PathwayError("unknown integrator '" + name + "' (known: " + known +
                      "; 'pathway render --list' describes them)" +
                      (reference && !why.empty() ? "; no reference stages: " + why : ""));
@@ -77,7 +115,9 @@ std::vector<const IntegratorInfo*> allIntegrators() {
   std::vector<const IntegratorInfo*> list;
   for (const auto& entry : registry()) list.push_back(&entry.second);
   std::stable_sort(list.begin(), list.end(), [](const IntegratorInfo* a, const IntegratorInfo* b) {
-    return a->stage != b->stage ? a->stage < b->stage : a->variant < b->variant;
+    if (a->stage != b->stage) return a->stage < b->stage;
+    if (a->variant != b->variant) return a->variant < b->variant;
+    return a->wavefront < b->wavefront;
   });
   return list;
 }

@@ -1,6 +1,8 @@
 // Integrators are found by name. Each stage file registers its integrator once (through
 // registerStage in render/stage_api.h); the student's version is "stageN", the reference (from
-// solutions/) "stageN@ref". Benchmarks may register integrators of their own.
+// solutions/) "stageN@ref". Where the reference also has a wavefront version
+// (render/wavefront.h), it is "stageN@fast": the same estimator, many paths at a time.
+// Benchmarks may register integrators of their own.
 #pragma once
 
 #include <functional>
@@ -25,7 +27,7 @@ struct IntegratorSetup {
 using IntegratorFactory = std::function<std::unique_ptr<Integrator>(const IntegratorSetup&)>;
 
 struct IntegratorInfo {
-  std::string name;  // "stage2" or "stage2@ref"
+  std::string name;  // "stage2", "stage2@ref" or "stage5@fast"
   int stage = 0;     // 1..5, the course stage it belongs to; 0 for others
   Variant variant = Variant::Student;
   std::string summary;  // one line for --list
@@ -35,6 +37,7 @@ struct IntegratorInfo {
   // Builds the integrator; may throw PathwayError for parameter combinations it refuses (before
   // any rendering starts).
   IntegratorFactory create;
+  bool wavefront = false;  // a reference's wavefront version ("stageN@fast")
 
   // The kit this integrator renders with when its earlier stages come from `earlier`.
   StageKit kit(EarlierStages earlier = EarlierStages::Own) const {
@@ -47,6 +50,9 @@ bool registerIntegrator(IntegratorInfo info);
 // Registers stage `stage` of `variant` under the stage's declared name, summary and parameters
 // (render/stage_catalog.h), running the stage's own checks before `factory`.
 bool registerStageIntegrator(int stage, Variant variant, IntegratorFactory factory);
+// Registers the wavefront version of reference stage `stage` as "stageN@fast", with the stage's
+// declared summary and parameters.
+bool registerWavefrontStageIntegrator(int stage, IntegratorFactory factory);
 
 // Every registration so far, in order. A name appears twice when a stage library
 // (render/stage_library.h) replaced a built-in stage.
@@ -61,5 +67,15 @@ std::vector<const IntegratorInfo*> allIntegrators();
 
 // The name stage `stage` registers under in `variant`: "stage2" or "stage2@ref".
 std::string stageIntegratorName(int stage, Variant variant);
+
+// How renders that are not student code (references, calibration, chart references, cluster
+// renders) trace the reference: its wavefront version where the stage has one, or always one
+// ray at a time (their --single-ray flag).
+enum class ReferenceTracing { Fastest, SingleRay };
+// The integrator such a render uses for stage `stage`: "stageN@fast" or "stageN@ref".
+std::string referenceIntegratorName(int stage, ReferenceTracing tracing);
+// The same for an integrator name: "stageN@ref" becomes "stageN@fast" when that exists and
+// `tracing` is Fastest; any other name is returned as it is.
+std::string referenceIntegratorFor(const std::string& name, ReferenceTracing tracing);
 
 }  // namespace pathway

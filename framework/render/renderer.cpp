@@ -3,11 +3,13 @@
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
 #include "core/error.h"
 #include "render/pixel_in_progress.h"
+#include "render/wavefront.h"
 
 namespace pathway {
 
@@ -33,6 +35,7 @@ Renderer::Renderer(const RayTracer& tracer, const Camera& camera, const Integrat
     : tracer_(tracer),
       camera_(camera),
       integrator_(integrator),
+      wavefront_(dynamic_cast<const WavefrontIntegrator*>(&integrator)),
       stage1_(stage1),
       settings_(checked(settings)),
       filter_(settings.filter, settings.filterRadiusPixels(), stage1.profiles),
@@ -71,6 +74,7 @@ Renderer::~Renderer() = default;
 
 void Renderer::renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount,
                           const std::atomic<bool>* cancel) {
+  if (wavefront_) return renderTileInBatches(tile, firstSample, sampleCount, cancel);
   tile.counters = RayCounters{};         // this pass's (the block adds to what earlier passes left)
   const CurrentTodoLog logged(&todos_);  // TODOs this thread runs now are this render's
   const RenderContext context(tracer_, tile.counters);
@@ -89,16 +93,64 @@ void Renderer::renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount
         const Vec2 filmPosition = Vec2(x, y) + samples.next2D();
         const Color radiance = integrator_.Li(camera_.generateRay(filmPosition), samples, context);
         expectedDimensions = samples.dimension();
-        if (!isFinite(radiance)) {  // counted and dropped, never written
-          ++tile.counters.invalidSamples;
-          continue;
-        }
-        stage1_.splat(tile.block, filmPosition, radiance, filter_);
-        ++tile.counters.samples;
+        splatSample(tile, filmPosition, radiance);
       }
       *pixelRays = tile.counters.totalRays() - raysBefore;
     }
   }
+  clearPixelInProgress();
+}
+
+void Renderer::splatSample(Tile& tile, Vec2 filmPosition, const Color& radiance) {
+  if (!isFinite(radiance)) {  // counted and dropped, never written
+    ++tile.counters.invalidSamples;
+    return;
+  }
+  stage1_.splat(tile.block, filmPosition, radiance, filter_);
+  ++tile.counters.samples;
+}
+
+// The same samples in the same order as renderTile, gathered into batches for a wavefront
+// integrator; each batch's results are splatted in that order, so the tile's sums come out as
+// if its samples had been rendered one by one.
+void Renderer::renderTileInBatches(Tile& tile, uint32_t firstSample, uint32_t sampleCount,
+                                   const std::atomic<bool>* cancel) {
+  tile.counters = RayCounters{};
+  const CurrentTodoLog logged(&todos_);
+  const RenderContext context(tracer_, tile.counters);
+  std::fill(tile.rays.begin(), tile.rays.end(), 0);
+  CameraSampleBatch batch;
+  std::vector<Vec2> filmPositions;
+  std::vector<uint32_t> pixelOfSample;                         // index into tile.rays
+  uint32_t expectedDimensions = Sampler::kMaxBlockDimensions;  // as in renderTile
+  auto flush = [&] {
+    wavefront_->LiBatch(batch, context);
+    expectedDimensions = batch.samples.back().dimension();
+    for (size_t i = 0; i < batch.size(); ++i) {
+      splatSample(tile, filmPositions[i], batch.radiance[i]);
+      tile.rays[pixelOfSample[i]] += batch.rays[i];
+    }
+    batch.clear();
+    filmPositions.clear();
+    pixelOfSample.clear();
+  };
+  uint32_t pixel = 0;
+  for (int y = tile.y0; y < tile.y1; ++y) {
+    for (int x = tile.x0; x < tile.x1; ++x, ++pixel) {
+      if (cancel && cancel->load(std::memory_order_relaxed)) return clearPixelInProgress();
+      recordPixelInProgress(x, y);  // the batch's last pixel: close to where a crash would be
+      const uint64_t pixelKey = sampler_.pixelKey(x, y);
+      for (uint32_t index = firstSample; index < firstSample + sampleCount; ++index) {
+        SampleStream samples(sampler_, pixelKey, index, expectedDimensions);
+        const Vec2 filmPosition = Vec2(x, y) + samples.next2D();
+        batch.add(camera_.generateRay(filmPosition), samples);
+        filmPositions.push_back(filmPosition);
+        pixelOfSample.push_back(pixel);
+        if (batch.size() == WavefrontIntegrator::kBatchSize) flush();
+      }
+    }
+  }
+  if (batch.size() > 0) flush();
   clearPixelInProgress();
 }
 

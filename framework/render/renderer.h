@@ -27,6 +27,8 @@
 
 namespace pathway {
 
+class WavefrontIntegrator;
+
 struct RenderStats {
   RayCounters counters;
   double seconds = 0.0;          // wall time spent in passes
@@ -64,11 +66,15 @@ class Renderer {
   struct Tile;
   void renderTile(Tile& tile, uint32_t firstSample, uint32_t sampleCount,
                   const std::atomic<bool>* cancel);
+  void renderTileInBatches(Tile& tile, uint32_t firstSample, uint32_t sampleCount,
+                           const std::atomic<bool>* cancel);
+  void splatSample(Tile& tile, Vec2 filmPosition, const Color& radiance);
   void mergeBlocks();
 
   const RayTracer& tracer_;
   const Camera& camera_;
   const Integrator& integrator_;
+  const WavefrontIntegrator* wavefront_;  // when the integrator renders batches
   const Stage1Functions& stage1_;
   RenderSettings settings_;
   PixelFilter filter_;

@@ -20,7 +20,7 @@ std::vector<int> loadStageLibrary(const std::string& path, Variant variant) {
   const std::vector<std::string>& log = registrationLog();
   for (size_t i = before; i < log.size(); ++i) {
     const IntegratorInfo& info = findIntegrator(log[i]);
-    if (info.stage > 0 && info.variant == variant) stages.push_back(info.stage);
+    if (info.stage > 0 && info.variant == variant && !info.wavefront) stages.push_back(info.stage);
   }
   return stages;
 }

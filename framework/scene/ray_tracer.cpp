@@ -116,11 +116,16 @@ std::optional<SurfaceHit> RayTracer::intersect(const Ray& ray, RayKind kind,
   rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(rtcScene_, &context, &rayHit);
   if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+  return surfaceHit(ray, rayHit.hit.geomID, rayHit.hit.primID, rayHit.ray.tfar, rayHit.hit.u,
+                    rayHit.hit.v, Vec3(rayHit.hit.Ng_x, rayHit.hit.Ng_y, rayHit.hit.Ng_z));
+}
 
+SurfaceHit RayTracer::surfaceHit(const Ray& ray, uint32_t meshIndex, uint32_t triangle, float t,
+                                 float u, float v, const Vec3& frontNormal) const {
   SurfaceHit hit;
-  hit.mesh = rayHit.hit.geomID;
-  hit.triangle = rayHit.hit.primID;
-  hit.distance = rayHit.ray.tfar;
+  hit.mesh = meshIndex;
+  hit.triangle = triangle;
+  hit.distance = t;
   const Mesh& mesh = scene_.meshes[hit.mesh];
   const glm::uvec3 tri = mesh.triangles[hit.triangle];
   // Component-wise loads: copying whole 12-byte vectors made GCC bounce them through the stack
@@ -128,13 +133,12 @@ std::optional<SurfaceHit> RayTracer::intersect(const Ray& ray, RayKind kind,
   const float* xyz = &mesh.positions.data()->x;
   auto vertex = [xyz](uint32_t i) { return Vec3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]); };
   const Vec3 p0 = vertex(tri.x), p1 = vertex(tri.y), p2 = vertex(tri.z);
-  const float u = rayHit.hit.u, v = rayHit.hit.v, w = 1.0f - u - v;
+  const float w = 1.0f - u - v;
   // The point from barycentrics lies on the triangle to float precision, unlike origin + t*dir,
   // whose error grows with the distance travelled.
   hit.position = w * p0 + u * p1 + v * p2;
 
   // Embree's Ng is the unnormalised front-face normal (p1 - p0) x (p2 - p0), already computed.
-  const Vec3 frontNormal(rayHit.hit.Ng_x, rayHit.hit.Ng_y, rayHit.hit.Ng_z);
   const float length = glm::length(frontNormal);
   hit.frontFace = glm::dot(frontNormal, ray.direction) < 0.0f;
   if (length > 0.0f && std::isfinite(length)) {
@@ -163,6 +167,78 @@ bool RayTracer::occluded(const Ray& ray, RayKind kind, RayCounters& counters) co
   RTCRay r = toEmbree(ray);
   rtcOccluded1(rtcScene_, &context, &r);
   return r.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
+}
+
+}  // namespace pathway
+
+namespace pathway {
+namespace {
+
+// Embree's packet calls take a validity mask: -1 for a lane that holds a ray, 0 for one that
+// does not (the lanes past `count`).
+void fillPacket(const Ray rays[], int count, int valid[RayTracer::kPacketSize], RTCRay16& packet) {
+  for (int i = 0; i < RayTracer::kPacketSize; ++i) {
+    const bool used = i < count;
+    valid[i] = used ? -1 : 0;
+    const Ray& ray = rays[used ? i : 0];
+    packet.org_x[i] = ray.origin.x;
+    packet.org_y[i] = ray.origin.y;
+    packet.org_z[i] = ray.origin.z;
+    packet.dir_x[i] = ray.direction.x;
+    packet.dir_y[i] = ray.direction.y;
+    packet.dir_z[i] = ray.direction.z;
+    packet.tnear[i] = 0.0f;
+    packet.tfar[i] = ray.tMax;
+    packet.time[i] = 0.0f;
+    packet.mask[i] = 0xFFFFFFFFu;
+    packet.id[i] = 0;
+    packet.flags[i] = 0;
+  }
+}
+
+}  // namespace
+
+void RayTracer::logQueries(const Ray rays[], int count, bool occlusionOnly) const {
+  if (log_)
+    for (int i = 0; i < count; ++i) log_->push_back({rays[i], occlusionOnly});
+}
+
+void RayTracer::intersectPacket(const Ray rays[], int count, RayKind kind, RayCounters& counters,
+                                std::optional<SurfaceHit> hits[]) const {
+  for (int i = 0; i < count; ++i) counters.count(kind);
+  logQueries(rays, count, false);
+  alignas(64) int valid[kPacketSize];
+  alignas(64) RTCRayHit16 packet;
+  fillPacket(rays, count, valid, packet.ray);
+  for (int i = 0; i < kPacketSize; ++i) {
+    packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+    packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+  }
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  rtcIntersect16(valid, rtcScene_, &context, &packet);
+  for (int i = 0; i < count; ++i) {
+    if (packet.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) {
+      hits[i].reset();
+      continue;
+    }
+    hits[i] = surfaceHit(rays[i], packet.hit.geomID[i], packet.hit.primID[i], packet.ray.tfar[i],
+                         packet.hit.u[i], packet.hit.v[i],
+                         Vec3(packet.hit.Ng_x[i], packet.hit.Ng_y[i], packet.hit.Ng_z[i]));
+  }
+}
+
+void RayTracer::occludedPacket(const Ray rays[], int count, RayKind kind, RayCounters& counters,
+                               bool blocked[]) const {
+  for (int i = 0; i < count; ++i) counters.count(kind);
+  logQueries(rays, count, true);
+  alignas(64) int valid[kPacketSize];
+  alignas(64) RTCRay16 packet;
+  fillPacket(rays, count, valid, packet);
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  rtcOccluded16(valid, rtcScene_, &context, &packet);
+  for (int i = 0; i < count; ++i) blocked[i] = packet.tfar[i] < 0.0f;  // -inf on a hit
 }
 
 }  // namespace pathway

@@ -37,6 +37,15 @@ class RayTracer {
   // True when anything blocks the ray in (0, tMax].
   bool occluded(const Ray& ray, RayKind kind, RayCounters& counters) const;
 
+  // The same queries for up to kPacketSize rays at once, traced together as one Embree packet
+  // (rtcIntersect16 / rtcOccluded16): what wavefront renderers use. Each answer is the one the
+  // single-ray query gives for that ray; `count` rays of one kind, 1 <= count <= kPacketSize.
+  static constexpr int kPacketSize = 16;
+  void intersectPacket(const Ray rays[], int count, RayKind kind, RayCounters& counters,
+                       std::optional<SurfaceHit> hits[]) const;
+  void occludedPacket(const Ray rays[], int count, RayKind kind, RayCounters& counters,
+                      bool blocked[]) const;
+
   // Records every query into `log` (nullptr: stop). Single-threaded renders only: the log is
   // not synchronised. Benchmarks use it to trace the same rays through raw Embree.
   void setRayLog(std::vector<LoggedRay>* log) { log_ = log; }
@@ -47,6 +56,12 @@ class RayTracer {
   size_t bvhBytes() const { return bvhBytes_; }  // memory Embree allocated for the BVH
 
  private:
+  // The hit Embree reported for `ray`: position from the barycentrics, normal facing the ray,
+  // material. One function for single rays and packets, so both give the same hit.
+  SurfaceHit surfaceHit(const Ray& ray, uint32_t mesh, uint32_t triangle, float t, float u, float v,
+                        const Vec3& frontNormal) const;
+  void logQueries(const Ray rays[], int count, bool occlusionOnly) const;
+
   const Scene& scene_;
   RTCDevice device_ = nullptr;
   RTCScene rtcScene_ = nullptr;

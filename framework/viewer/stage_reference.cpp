@@ -13,7 +13,9 @@ uint64_t referenceSeed(uint64_t seed) {
 const IntegratorInfo* stageReferenceOf(const std::string& integrator) {
   for (const IntegratorInfo* info : allIntegrators())
     if (info->name == integrator)
-      return info->stage > 0 ? findStageIntegrator(info->stage, Variant::Reference) : nullptr;
+      return info->stage > 0 && findStageIntegrator(info->stage, Variant::Reference)
+                 ? &findIntegrator(referenceIntegratorName(info->stage, ReferenceTracing::Fastest))
+                 : nullptr;
   return nullptr;
 }
 

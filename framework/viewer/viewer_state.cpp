@@ -48,6 +48,9 @@ bool toggleVariant(ViewerState& state, int lane) {
       current->variant == Variant::Student ? Variant::Reference : Variant::Student;
   const IntegratorInfo* info = findStageIntegrator(current->stage, other);
   if (!info) return false;
+  // The reference renders with its wavefront version where there is one: the same image, sooner.
+  if (other == Variant::Reference)
+    info = &findIntegrator(referenceIntegratorName(current->stage, ReferenceTracing::Fastest));
   state.integrator[lane] = info->name;
   return true;
 }
@@ -55,7 +58,10 @@ bool toggleVariant(ViewerState& state, int lane) {
 bool selectStage(ViewerState& state, int lane, int stage) {
   const IntegratorInfo* current = find(state.integrator[lane]);
   const Variant variant = current ? current->variant : Variant::Student;
-  const IntegratorInfo* info = findStageIntegrator(stage, variant);
+  const IntegratorInfo* info =
+      variant == Variant::Reference && findStageIntegrator(stage, variant)
+          ? &findIntegrator(referenceIntegratorName(stage, ReferenceTracing::Fastest))
+          : findStageIntegrator(stage, variant);
   if (!info)
     info = findStageIntegrator(stage,
                                variant == Variant::Student ? Variant::Reference : Variant::Student);

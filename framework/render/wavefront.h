@@ -1,0 +1,81 @@
+// Wavefront integrators: many camera samples at a time, their rays traced together in Embree's
+// 16-ray packets, each bounce of all the batch's paths at once. They are for the renders that
+// are not student code (references, calibration, charts, cluster renders): a student's stage
+// traces one ray at a time (render/integrator.h).
+//
+// A wavefront integrator computes the same estimator as its stage's reference, sample by sample:
+// the same numbers from each sample's SampleStream in the same order, the same arithmetic. The
+// renderer hands it the samples of a tile in the order it would have called Li, and splats the
+// results in that order, so the image is still bit-identical for any thread count.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "render/integrator.h"
+#include "render/integrator_registry.h"
+#include "render/stage_definition.h"
+
+namespace pathway {
+
+// One batch of camera samples: inputs (camera ray, the sample's numbers after the pixel
+// position) and outputs (radiance, rays traced), index by index.
+struct CameraSampleBatch {
+  std::vector<Ray> cameraRays;
+  std::vector<SampleStream> samples;
+  std::vector<Color> radiance;
+  std::vector<uint32_t> rays;  // rays each sample traced, for the ray heatmap
+
+  size_t size() const { return cameraRays.size(); }
+  void clear() {
+    cameraRays.clear();
+    samples.clear();
+    radiance.clear();
+    rays.clear();
+  }
+  void add(const Ray& cameraRay, const SampleStream& stream) {
+    cameraRays.push_back(cameraRay);
+    samples.push_back(stream);
+  }
+};
+
+class WavefrontIntegrator : public Integrator {
+ public:
+  // How many samples the renderer should gather per call: enough that packets stay full after
+  // many paths have ended.
+  static constexpr size_t kBatchSize = 1024;
+
+  // Fills batch.radiance and batch.rays, one per sample: for each, what Li would return.
+  virtual void LiBatch(CameraSampleBatch& batch, const RenderContext& context) const = 0;
+
+  // One sample: a batch of one.
+  Color Li(const Ray& cameraRay, SampleStream& samples, const RenderContext& context) const final {
+    CameraSampleBatch batch;
+    batch.add(cameraRay, samples);
+    LiBatch(batch, context);
+    samples = batch.samples[0];
+    return batch.radiance[0];
+  }
+};
+
+// Traces rays[i] for every i in `which` (indices into `rays`) in packets of RayTracer::kPacketSize,
+// and stores the answers at hits[i] / blocked[i].
+void intersectAll(const RenderContext& context, const std::vector<Ray>& rays,
+                  const std::vector<uint32_t>& which, RayKind kind,
+                  std::vector<std::optional<SurfaceHit>>& hits);
+void occludedAll(const RenderContext& context, const std::vector<Ray>& rays,
+                 const std::vector<uint32_t>& which, RayKind kind, std::vector<uint8_t>& blocked);
+
+// Registers `IntegratorType`, built from a StageSetup<Params> like the stage's reference, as the
+// stage's wavefront version "stageN@fast" (in solutions/ only: it holds the stage's solution).
+template <typename IntegratorType, typename Params>
+bool registerWavefrontStage(const StageDefinition<Params>& stage) {
+  return registerWavefrontStageIntegrator(
+      stage.number, [&stage](const IntegratorSetup& setup) -> std::unique_ptr<Integrator> {
+        const Params params = stage.read(setup.params);
+        return std::make_unique<IntegratorType>(StageSetup<Params>{params, setup.kit, setup.scene});
+      });
+}
+
+}  // namespace pathway
