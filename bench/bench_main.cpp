@@ -23,6 +23,7 @@
 #include "bench_kit.h"
 #include "ceiling.h"
 #include "core/error.h"
+#include "fast.h"
 #include "growth.h"
 #include "render/recipe_builder.h"
 #include "render/render_session.h"
@@ -287,15 +288,17 @@ struct Arguments {
   std::optional<uint32_t> spp;
   std::optional<std::string> outDir;
   std::optional<uint64_t> maxTriangles;
+  std::optional<int> calibrationSeeds;
 };
 
 Arguments parseArguments(int argc, char** argv) {
   Arguments args;
   args.mode = argv[1];
   if (args.mode != "rays" && args.mode != "stages" && args.mode != "memory" &&
-      args.mode != "growth" && args.mode != "startup" && args.mode != "ceiling")
+      args.mode != "growth" && args.mode != "startup" && args.mode != "ceiling" &&
+      args.mode != "fast")
     throw UsageError("unknown mode '" + args.mode +
-                     "' (rays, stages, memory, growth, startup or ceiling)");
+                     "' (rays, stages, memory, growth, startup, ceiling or fast)");
   for (int i = 2; i < argc; ++i) {
     const std::string arg = argv[i];
     auto value = [&]() -> std::string {
@@ -310,8 +313,11 @@ Arguments parseArguments(int argc, char** argv) {
           parseCount(arg, value(), 1, static_cast<uint64_t>(setting::kWidth.maxValue)));
     } else if (arg == "--repeats") {
       args.repeats = static_cast<int>(parseCount(arg, value(), 1, 1000));
+    } else if (arg == "--calibrate") {
+      onlyFor("fast");
+      args.calibrationSeeds = static_cast<int>(parseCount(arg, value(), 0, 100000, true));
     } else if (arg == "--spp") {
-      onlyFor("ceiling");
+      if (args.mode != "fast") onlyFor("ceiling");
       args.spp = static_cast<uint32_t>(parseCount(arg, value(), setting::kSamplesPerPixel.minValue,
                                                   setting::kSamplesPerPixel.maxValue));
     } else if (arg == "--out") {
@@ -352,6 +358,15 @@ int run(const Arguments& args) {
     ceiling.samplesPerPixel = args.spp.value_or(ceiling.samplesPerPixel);
     ceiling.repeats = args.repeats.value_or(ceiling.repeats);
     return benchCeiling(ceiling);
+  }
+  if (args.mode == "fast") {
+    FastOptions fast;
+    fast.scene = scene;
+    fast.width = args.width.value_or(fast.width);
+    fast.samplesPerPixel = args.spp.value_or(fast.samplesPerPixel);
+    fast.repeats = args.repeats.value_or(fast.repeats);
+    fast.calibrationSeeds = args.calibrationSeeds.value_or(fast.calibrationSeeds);
+    return benchFast(fast);
   }
   GrowthOptions growth;
   growth.scene = scene;

@@ -5,7 +5,8 @@ Run with the virtual environment's python (scripts/bench peers sets it up):
     build/peers/venv/bin/python bench/peers/peers.py [--out build/peers-results] [--quick]
 
 One run measures, in this order (docs/benchmarks.md, "Peers: Mitsuba 3"):
-  1. time: Pathway `stage5@ref` (whole process and its --timings render) and Mitsuba
+  1. time: Pathway `stage5@fast` (--integrator; the wavefront reference: the same image as
+     `stage5@ref`, bit for bit) (whole process and its --timings render) and Mitsuba
      `scalar_rgb` and `llvm_ad_rgb` (process to first image, first render, later renders) on the
      same image: 256x256, 64 spp, box filter of one pixel, all threads, Pathway with stage 5's
      own sampler (Owen-scrambled Sobol'; --sampler picks another) and Mitsuba with its
@@ -47,6 +48,8 @@ def parse_args():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--pathway", default=str(ROOT / "build/release/pathway"))
     p.add_argument("--scene", default=str(ROOT / "scenes/cornell_box.gltf"))
+    p.add_argument("--integrator", default="stage5@fast",
+                   help="Pathway's stage 5: stage5@fast (wavefront) or stage5@ref (single rays)")
     p.add_argument("--out", default=str(ROOT / "build/peers-results"))
     p.add_argument("--width", type=int, default=256, help="timed image (square)")
     p.add_argument("--spp", type=int, default=64, help="timed image's samples per pixel")
@@ -173,7 +176,7 @@ class Renderers:
         a = self.args
         exr = self._file(".exr")
         depth = a.max_depth if max_depth is None else max_depth
-        cmd = [a.pathway, "render", a.scene, "-i", "stage5@ref", "--spp", str(spp),
+        cmd = [a.pathway, "render", a.scene, "-i", a.integrator, "--spp", str(spp),
                "--width", str(width), "--height", str(width), "--filter", "box",
                "--filter-radius", "0.5", "--sampler", a.sampler, "--seed", str(seed),
                "--threads", "0", "-p", f"max-depth={depth}", "-p", f"rr-depth={a.rr_depth}",
@@ -255,7 +258,7 @@ def section_time(rep, run, args):
 
     llvm_render = best(cold)
     rows = [
-        ["Pathway stage5@ref", fmt_s(pw["wall"]), fmt_s(pw["first_ray"]), fmt_s(pw["render"]),
+        [f"Pathway {a.integrator}", fmt_s(pw["wall"]), fmt_s(pw["first_ray"]), fmt_s(pw["render"]),
          fmt_s(pw["render"]), fmt_s(pw["write"] + pw["wall"] - pw["written"]), "1.00"],
         ["Mitsuba scalar_rgb", fmt_s(scalar["to_first_image"]), fmt_s(scalar["to_scene"]),
          fmt_s(scalar["renders"][0]["seconds"]), fmt_s(best(scalar)), "—",
@@ -301,7 +304,7 @@ def section_time(rep, run, args):
 
     pw_cpu = min(r["cpu"] for r in runs)
     cpu_rows = [
-        ["Pathway stage5@ref", f"{pw_cpu:.2f}", "—", "1.00"],
+        [f"Pathway {a.integrator}", f"{pw_cpu:.2f}", "—", "1.00"],
         ["Mitsuba scalar_rgb", f"{first_image_cpu(scalar):.2f}", f"{best_cpu(scalar):.2f}",
          f"{pw_cpu / best_cpu(scalar):.2f}"],
         ["Mitsuba llvm_ad_rgb, cold kernel cache", f"{first_image_cpu(cold):.2f}",
@@ -552,7 +555,7 @@ def main():
     if not os.access(args.pathway, os.X_OK):
         sys.exit(f"peers: {args.pathway} not found: build it first (scripts/build release)")
     rep = Report(args.out)
-    rep.say("# Peers: Pathway stage5@ref against Mitsuba 3")
+    rep.say(f"# Peers: Pathway {args.integrator} against Mitsuba 3")
     rep.say()
     for line in machine_lines(args):
         rep.say(line)
