@@ -9,6 +9,7 @@
 // results in that order, so the image is still bit-identical for any thread count.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -59,13 +60,40 @@ class WavefrontIntegrator : public Integrator {
   }
 };
 
-// Traces rays[i] for every i in `which` (indices into `rays`) in packets of RayTracer::kPacketSize,
-// and stores the answers at hits[i] / blocked[i].
-void intersectAll(const RenderContext& context, const std::vector<Ray>& rays,
-                  const std::vector<uint32_t>& which, RayKind kind,
-                  std::vector<std::optional<SurfaceHit>>& hits);
-void occludedAll(const RenderContext& context, const std::vector<Ray>& rays,
-                 const std::vector<uint32_t>& which, RayKind kind, std::vector<uint8_t>& blocked);
+// Traces rays[i] for every i in `which` (indices into `rays`) in packets of
+// RayTracer::kPacketSize, and stores the answers at hits[i] / blocked[i]. Inline, as everything a
+// solution file calls in the framework beyond the program's own use must be: a handout's compiled
+// reference stages find the framework's functions in the program, which links only what it uses.
+template <typename Trace>
+void inPackets(const std::vector<Ray>& rays, const std::vector<uint32_t>& which, Trace trace) {
+  constexpr int kLanes = RayTracer::kPacketSize;
+  Ray packet[kLanes];
+  for (size_t start = 0; start < which.size(); start += kLanes) {
+    const int count = static_cast<int>(std::min<size_t>(kLanes, which.size() - start));
+    for (int lane = 0; lane < count; ++lane) packet[lane] = rays[which[start + lane]];
+    trace(packet, count, &which[start]);
+  }
+}
+
+inline void intersectAll(const RenderContext& context, const std::vector<Ray>& rays,
+                         const std::vector<uint32_t>& which, RayKind kind,
+                         std::vector<std::optional<SurfaceHit>>& hits) {
+  std::optional<SurfaceHit> answers[RayTracer::kPacketSize];
+  inPackets(rays, which, [&](const Ray* packet, int count, const uint32_t* indices) {
+    context.tracer().intersectPacket(packet, count, kind, context.counters(), answers);
+    for (int lane = 0; lane < count; ++lane) hits[indices[lane]] = answers[lane];
+  });
+}
+
+inline void occludedAll(const RenderContext& context, const std::vector<Ray>& rays,
+                        const std::vector<uint32_t>& which, RayKind kind,
+                        std::vector<uint8_t>& blocked) {
+  bool answers[RayTracer::kPacketSize];
+  inPackets(rays, which, [&](const Ray* packet, int count, const uint32_t* indices) {
+    context.tracer().occludedPacket(packet, count, kind, context.counters(), answers);
+    for (int lane = 0; lane < count; ++lane) blocked[indices[lane]] = answers[lane];
+  });
+}
 
 // Registers `IntegratorType`, built from a StageSetup<Params> like the stage's reference, as the
 // stage's wavefront version "stageN@fast" (in solutions/ only: it holds the stage's solution).
