@@ -1,6 +1,6 @@
-// The wavefront references (stage3@fast, stage5@fast): the same estimator as the single-ray
-// reference, sample by sample, so on these scenes their images equal stage3@ref's and
-// stage5@ref's bit for bit (Embree's 16-ray packets report the same hits as single rays here);
+// The wavefront references (stage2@fast, stage3@fast, stage5@fast): the same estimator as the
+// single-ray reference, sample by sample, so on these scenes their images equal stageN@ref's bit
+// for bit (Embree's 16-ray packets report the same hits as single rays here);
 // the same image for any thread count; the same ray counts; and chosen by default wherever a
 // reference renders, unless a render asks for one ray at a time.
 #include "render/wavefront.h"
@@ -100,6 +100,15 @@ TEST(WavefrontStages, PathTracerGivesTheSingleRayReferencesImageBitForBit) {
           {"textured_quad.gltf", {}, SamplerType::Sobol, 4}});
 }
 
+TEST(WavefrontStages, NestedAmbientOcclusionGivesTheSingleRayReferencesImageBitForBit) {
+  PATHWAY_REQUIRE_WAVEFRONT();
+  compareWithSingleRay(
+      2, {{"cornell_box.gltf", {}, SamplerType::Independent, 4},
+          {"ceiling.gltf", {{"ao-rays", "7"}, {"ao-distance", "3"}}, SamplerType::Sobol, 4},
+          // More AO rays than a batch holds samples: batches of one packet.
+          {"corner.gltf", {{"ao-rays", "200"}}, SamplerType::Stratified, 2}});
+}
+
 TEST(WavefrontStages, AmbientOcclusion4DGivesTheSingleRayReferencesImageBitForBit) {
   PATHWAY_REQUIRE_WAVEFRONT();
   compareWithSingleRay(3, {{"cornell_box.gltf", {}, SamplerType::Sobol, 8},
@@ -112,7 +121,7 @@ TEST(WavefrontStages, AmbientOcclusion4DGivesTheSingleRayReferencesImageBitForBi
 TEST(WavefrontStages, TheFastNamesAreWavefrontIntegratorsAndOtherParametersChangeTheImage) {
   PATHWAY_REQUIRE_WAVEFRONT();
   const Scene scene = loadScene(scenePath("cornell_box.gltf"));
-  for (int stage : {3, 5}) {
+  for (int stage : {2, 3, 5}) {
     const IntegratorInfo& info =
         findIntegrator(referenceIntegratorName(stage, ReferenceTracing::Fastest));
     EXPECT_TRUE(info.wavefront) << info.name;
@@ -131,7 +140,7 @@ TEST(WavefrontStages, OneAndManyThreadsGiveTheSameImage) {
   PATHWAY_REQUIRE_WAVEFRONT();
   const Scene scene = loadScene(scenePath("cornell_box.gltf"));
   const RayTracer tracer(scene);
-  for (const char* name : {"stage5@fast", "stage3@fast"}) {
+  for (const char* name : {"stage5@fast", "stage3@fast", "stage2@fast"}) {
     const Case c{"cornell_box.gltf", {}, SamplerType::Sobol, 8};
     const RenderResult one = render(tracer, name, c, 1);
     for (int threads : {2, 5}) {

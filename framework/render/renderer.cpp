@@ -134,6 +134,7 @@ void Renderer::renderTileInBatches(Tile& tile, uint32_t firstSample, uint32_t sa
     filmPositions.clear();
     pixelOfSample.clear();
   };
+  const size_t batchSize = wavefront_->batchSize();
   uint32_t pixel = 0;
   for (int y = tile.y0; y < tile.y1; ++y) {
     for (int x = tile.x0; x < tile.x1; ++x, ++pixel) {
@@ -146,7 +147,7 @@ void Renderer::renderTileInBatches(Tile& tile, uint32_t firstSample, uint32_t sa
         batch.add(camera_.generateRay(filmPosition), samples);
         filmPositions.push_back(filmPosition);
         pixelOfSample.push_back(pixel);
-        if (batch.size() == WavefrontIntegrator::kBatchSize) flush();
+        if (batch.size() == batchSize) flush();
       }
     }
   }

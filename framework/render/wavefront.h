@@ -43,9 +43,10 @@ struct CameraSampleBatch {
 
 class WavefrontIntegrator : public Integrator {
  public:
-  // How many samples the renderer should gather per call: enough that packets stay full after
-  // many paths have ended.
+  // How many samples the renderer gathers per call: enough that packets stay full after many
+  // paths have ended.
   static constexpr size_t kBatchSize = 1024;
+  virtual size_t batchSize() const { return kBatchSize; }
 
   // Fills batch.radiance and batch.rays, one per sample: for each, what Li would return.
   virtual void LiBatch(CameraSampleBatch& batch, const RenderContext& context) const = 0;
@@ -64,35 +65,24 @@ class WavefrontIntegrator : public Integrator {
 // RayTracer::kPacketSize, and stores the answers at hits[i] / blocked[i]. Inline, as everything a
 // solution file calls in the framework beyond the program's own use must be: a handout's compiled
 // reference stages find the framework's functions in the program, which links only what it uses.
-template <typename Trace>
-void inPackets(const std::vector<Ray>& rays, const std::vector<uint32_t>& which, Trace trace) {
-  constexpr int kLanes = RayTracer::kPacketSize;
-  Ray packet[kLanes];
-  for (size_t start = 0; start < which.size(); start += kLanes) {
-    const int count = static_cast<int>(std::min<size_t>(kLanes, which.size() - start));
-    for (int lane = 0; lane < count; ++lane) packet[lane] = rays[which[start + lane]];
-    trace(packet, count, &which[start]);
-  }
-}
-
 inline void intersectAll(const RenderContext& context, const std::vector<Ray>& rays,
                          const std::vector<uint32_t>& which, RayKind kind,
                          std::vector<std::optional<SurfaceHit>>& hits) {
-  std::optional<SurfaceHit> answers[RayTracer::kPacketSize];
-  inPackets(rays, which, [&](const Ray* packet, int count, const uint32_t* indices) {
-    context.tracer().intersectPacket(packet, count, kind, context.counters(), answers);
-    for (int lane = 0; lane < count; ++lane) hits[indices[lane]] = answers[lane];
-  });
+  for (size_t start = 0; start < which.size(); start += RayTracer::kPacketSize)
+    context.tracer().intersectPacket(
+        rays.data(), &which[start],
+        static_cast<int>(std::min<size_t>(RayTracer::kPacketSize, which.size() - start)), kind,
+        context.counters(), hits.data());
 }
 
 inline void occludedAll(const RenderContext& context, const std::vector<Ray>& rays,
                         const std::vector<uint32_t>& which, RayKind kind,
                         std::vector<uint8_t>& blocked) {
-  bool answers[RayTracer::kPacketSize];
-  inPackets(rays, which, [&](const Ray* packet, int count, const uint32_t* indices) {
-    context.tracer().occludedPacket(packet, count, kind, context.counters(), answers);
-    for (int lane = 0; lane < count; ++lane) blocked[indices[lane]] = answers[lane];
-  });
+  for (size_t start = 0; start < which.size(); start += RayTracer::kPacketSize)
+    context.tracer().occludedPacket(
+        rays.data(), &which[start],
+        static_cast<int>(std::min<size_t>(RayTracer::kPacketSize, which.size() - start)), kind,
+        context.counters(), blocked.data());
 }
 
 // Registers `IntegratorType`, built from a StageSetup<Params> like the stage's reference, as the

@@ -176,11 +176,12 @@ namespace {
 
 // Embree's packet calls take a validity mask: -1 for a lane that holds a ray, 0 for one that
 // does not (the lanes past `count`).
-void fillPacket(const Ray rays[], int count, int valid[RayTracer::kPacketSize], RTCRay16& packet) {
+void fillPacket(const Ray rays[], const uint32_t which[], int count,
+                int valid[RayTracer::kPacketSize], RTCRay16& packet) {
   for (int i = 0; i < RayTracer::kPacketSize; ++i) {
     const bool used = i < count;
     valid[i] = used ? -1 : 0;
-    const Ray& ray = rays[used ? i : 0];
+    const Ray& ray = rays[which[used ? i : 0]];
     packet.org_x[i] = ray.origin.x;
     packet.org_y[i] = ray.origin.y;
     packet.org_z[i] = ray.origin.z;
@@ -198,18 +199,19 @@ void fillPacket(const Ray rays[], int count, int valid[RayTracer::kPacketSize], 
 
 }  // namespace
 
-void RayTracer::logQueries(const Ray rays[], int count, bool occlusionOnly) const {
+void RayTracer::logQueries(const Ray rays[], const uint32_t which[], int count,
+                           bool occlusionOnly) const {
   if (log_)
-    for (int i = 0; i < count; ++i) log_->push_back({rays[i], occlusionOnly});
+    for (int i = 0; i < count; ++i) log_->push_back({rays[which[i]], occlusionOnly});
 }
 
-void RayTracer::intersectPacket(const Ray rays[], int count, RayKind kind, RayCounters& counters,
-                                std::optional<SurfaceHit> hits[]) const {
+void RayTracer::intersectPacket(const Ray rays[], const uint32_t which[], int count, RayKind kind,
+                                RayCounters& counters, std::optional<SurfaceHit> hits[]) const {
   for (int i = 0; i < count; ++i) counters.count(kind);
-  logQueries(rays, count, false);
+  logQueries(rays, which, count, false);
   alignas(64) int valid[kPacketSize];
   alignas(64) RTCRayHit16 packet;
-  fillPacket(rays, count, valid, packet.ray);
+  fillPacket(rays, which, count, valid, packet.ray);
   for (int i = 0; i < kPacketSize; ++i) {
     packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
     packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
@@ -218,27 +220,28 @@ void RayTracer::intersectPacket(const Ray rays[], int count, RayKind kind, RayCo
   rtcInitIntersectContext(&context);
   rtcIntersect16(valid, rtcScene_, &context, &packet);
   for (int i = 0; i < count; ++i) {
+    std::optional<SurfaceHit>& hit = hits[which[i]];
     if (packet.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) {
-      hits[i].reset();
+      hit.reset();
       continue;
     }
-    hits[i] = surfaceHit(rays[i], packet.hit.geomID[i], packet.hit.primID[i], packet.ray.tfar[i],
-                         packet.hit.u[i], packet.hit.v[i],
-                         Vec3(packet.hit.Ng_x[i], packet.hit.Ng_y[i], packet.hit.Ng_z[i]));
+    hit = surfaceHit(rays[which[i]], packet.hit.geomID[i], packet.hit.primID[i], packet.ray.tfar[i],
+                     packet.hit.u[i], packet.hit.v[i],
+                     Vec3(packet.hit.Ng_x[i], packet.hit.Ng_y[i], packet.hit.Ng_z[i]));
   }
 }
 
-void RayTracer::occludedPacket(const Ray rays[], int count, RayKind kind, RayCounters& counters,
-                               bool blocked[]) const {
+void RayTracer::occludedPacket(const Ray rays[], const uint32_t which[], int count, RayKind kind,
+                               RayCounters& counters, uint8_t blocked[]) const {
   for (int i = 0; i < count; ++i) counters.count(kind);
-  logQueries(rays, count, true);
+  logQueries(rays, which, count, true);
   alignas(64) int valid[kPacketSize];
   alignas(64) RTCRay16 packet;
-  fillPacket(rays, count, valid, packet);
+  fillPacket(rays, which, count, valid, packet);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   rtcOccluded16(valid, rtcScene_, &context, &packet);
-  for (int i = 0; i < count; ++i) blocked[i] = packet.tfar[i] < 0.0f;  // -inf on a hit
+  for (int i = 0; i < count; ++i) blocked[which[i]] = packet.tfar[i] < 0.0f;  // -inf on a hit
 }
 
 }  // namespace pathway

@@ -38,13 +38,14 @@ class RayTracer {
   bool occluded(const Ray& ray, RayKind kind, RayCounters& counters) const;
 
   // The same queries for up to kPacketSize rays at once, traced together as one Embree packet
-  // (rtcIntersect16 / rtcOccluded16): what wavefront renderers use. Each answer is the one the
-  // single-ray query gives for that ray; `count` rays of one kind, 1 <= count <= kPacketSize.
+  // (rtcIntersect16 / rtcOccluded16): what wavefront renderers use. The packet is the rays
+  // rays[which[0]], ..., rays[which[count - 1]] (1 <= count <= kPacketSize, all of one kind);
+  // the answer for rays[i] goes to hits[i] / blocked[i], the one the single-ray query gives.
   static constexpr int kPacketSize = 16;
-  void intersectPacket(const Ray rays[], int count, RayKind kind, RayCounters& counters,
-                       std::optional<SurfaceHit> hits[]) const;
-  void occludedPacket(const Ray rays[], int count, RayKind kind, RayCounters& counters,
-                      bool blocked[]) const;
+  void intersectPacket(const Ray rays[], const uint32_t which[], int count, RayKind kind,
+                       RayCounters& counters, std::optional<SurfaceHit> hits[]) const;
+  void occludedPacket(const Ray rays[], const uint32_t which[], int count, RayKind kind,
+                      RayCounters& counters, uint8_t blocked[]) const;
 
   // Records every query into `log` (nullptr: stop). Single-threaded renders only: the log is
   // not synchronised. Benchmarks use it to trace the same rays through raw Embree.
@@ -60,7 +61,7 @@ class RayTracer {
   // material. One function for single rays and packets, so both give the same hit.
   SurfaceHit surfaceHit(const Ray& ray, uint32_t mesh, uint32_t triangle, float t, float u, float v,
                         const Vec3& frontNormal) const;
-  void logQueries(const Ray rays[], int count, bool occlusionOnly) const;
+  void logQueries(const Ray rays[], const uint32_t which[], int count, bool occlusionOnly) const;
 
   const Scene& scene_;
   RTCDevice device_ = nullptr;
