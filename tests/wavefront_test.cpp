@@ -7,8 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cstring>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -177,6 +179,29 @@ TEST(WavefrontStages, OneSampleAtATimeGivesWhatABatchGives) {
     EXPECT_EQ(0, std::memcmp(&alone[i], &batch.radiance[i], sizeof(Color))) << "sample " << i;
 }
 
+// What the viewer reads besides the image: rays per pixel (its heatmap), and a cancelled pass
+// that leaves the film as it was.
+TEST(WavefrontStages, RaysPerPixelMatchAndACancelledPassLeavesTheFilmUntouched) {
+  PATHWAY_REQUIRE_WAVEFRONT();
+  const Scene scene = loadScene(scenePath("cornell_box.gltf"));
+  const RayTracer tracer(scene);
+  const Camera camera(scene, 40, 40);
+  auto session = [&](const char* name) {
+    return std::make_unique<RenderSession>(
+        tracer, camera, RecipeBuilder(name).size(40, 40).spp(4, 1).seed(2).recipe());
+  };
+  const auto single = session("stage5@ref"), fast = session("stage5@fast"),
+             twin = session("stage5@fast");
+  ASSERT_TRUE(single->renderer().renderPass() && fast->renderer().renderPass() &&
+              twin->renderer().renderPass());
+  EXPECT_EQ(single->renderer().raysPerPixel(), fast->renderer().raysPerPixel());
+  const std::atomic<bool> cancel{true};
+  EXPECT_FALSE(fast->renderer().renderPass(&cancel));
+  EXPECT_EQ(fast->renderer().stats().samplesPerPixel, 1u);
+  EXPECT_TRUE(sameBits(twin->renderer().film().develop(), fast->renderer().film().develop()));
+  EXPECT_EQ(twin->renderer().raysPerPixel(), fast->renderer().raysPerPixel());
+}
+
 TEST(WavefrontStages, ReferencesRenderWithTheWavefrontVersionUnlessAskedForSingleRays) {
   PATHWAY_REQUIRE_WAVEFRONT();
   EXPECT_EQ("stage5@fast", referenceIntegratorName(5, ReferenceTracing::Fastest));
@@ -194,6 +219,7 @@ TEST(WavefrontStages, ReferencesRenderWithTheWavefrontVersionUnlessAskedForSingl
       c.recipe(Variant::Reference, EarlierStages::Own, 1, ReferenceTracing::SingleRay).integrator);
   EXPECT_EQ("stage5", c.recipe(Variant::Student, EarlierStages::Own, 1).integrator);
 
+  EXPECT_EQ(std::vector<std::string>({"-istage2@fast"}), withFastestReference({"-istage2@ref"}));
   const std::vector<std::string> given = {"scene.gltf",   "-i",         "stage5@ref",
                                           "--integrator", "stage1@ref", "--integrator=stage3@ref",
                                           "-p",           "nee=off"};

@@ -289,7 +289,7 @@ ChartData runChart(const ChartSpec& spec, const ChartRunOptions& options) {
         throw PathwayError(reference.exrPath + ": the cached reference has the wrong size");
       referenceImages[label] = std::move(loaded.images.color);
     } else {
-      const RenderRecipe recipe = recipeOf(*reference.config, reference.spp, kReferenceSeed);
+      const RenderRecipe recipe = recipeOf(*reference.config, reference.spp, kReferenceSeed, true);
       const std::string what =
           "reference of \"" + label + "\", " + std::to_string(reference.spp) + " spp";
       const RenderResult result = runRender(*scene.tracer, recipe, [&](const RenderStats& stats) {

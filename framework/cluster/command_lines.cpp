@@ -70,6 +70,8 @@ std::vector<std::string> withFastestReference(std::vector<std::string> arguments
       ++i;
     } else if (word.rfind(joined, 0) == 0) {
       word = joined + referenceIntegratorFor(word.substr(joined.size()), ReferenceTracing::Fastest);
+    } else if (word.size() > 2 && word.rfind("-i", 0) == 0) {  // -istage5@ref
+      word = "-i" + referenceIntegratorFor(word.substr(2), ReferenceTracing::Fastest);
     }
   }
   return arguments;

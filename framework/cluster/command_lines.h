@@ -13,8 +13,8 @@ namespace pathway {
 // `pathway render <scene and options> --spp N --samples A:B ...`: one task's part of a render
 // split by samples (render --samples), or the check that every task's options pass (--check:
 // loads the scene and checks them, renders nothing).
-// The render's arguments with a reference stage (-i stageN@ref, --integrator stageN@ref or
-// --integrator=stageN@ref) replaced by its wavefront version where it has one: the same
+// The render's arguments with a reference stage (-i stageN@ref, -istageN@ref, --integrator
+// stageN@ref or --integrator=stageN@ref) replaced by its wavefront version where it has one: the same
 // estimator and numbers, traced many paths at a time (`pathway cluster render` without
 // --single-ray).
 std::vector<std::string> withFastestReference(std::vector<std::string> renderArguments);

@@ -49,6 +49,16 @@ GradingReference makeGradingReference(const GradingCase& gradingCase, const RayT
   record.tileSize = gradingCase.tileSize;
   record.secondsPerRender = seconds / kReferenceReplicates;
   record.raysPerSecond = seconds > 0.0 ? rays / seconds : 0.0;
+  // Students get a multiple of this time and see these rays/s beside theirs: one ray at a time,
+  // as their stage traces, even when the replicates came from the faster wavefront version.
+  const RenderRecipe singleRay = gradingCase.recipe(Variant::Reference, EarlierStages::Own,
+                                                    kReferenceSeed, ReferenceTracing::SingleRay);
+  if (singleRay.integrator != reference.metadata.integrator) {
+    const RenderResult timed = runRender(tracer, singleRay);
+    record.secondsPerRender = timed.stats.seconds;
+    record.raysPerSecond =
+        timed.stats.seconds > 0.0 ? timed.stats.counters.totalRays() / timed.stats.seconds : 0.0;
+  }
   // The replicates' own seed, timing and file path would only mislead (the scene is known by
   // its content hash): the reference's timing is in its record.
   reference.metadata.seed.reset();

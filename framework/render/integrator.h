@@ -42,6 +42,8 @@ class RenderContext {
   RayCounters& counters_;
 };
 
+class WavefrontIntegrator;
+
 class Integrator {
  public:
   virtual ~Integrator() = default;
@@ -51,6 +53,10 @@ class Integrator {
   // integrator takes its own random numbers from it, in a fixed order.
   virtual Color Li(const Ray& cameraRay, SampleStream& samples,
                    const RenderContext& context) const = 0;
+
+  // A reference's wavefront version (render/wavefront.h) renders whole batches instead; the
+  // renderer asks through this (no dynamic_cast: the type may live in a loaded library).
+  virtual const WavefrontIntegrator* asWavefront() const { return nullptr; }
 };
 
 }  // namespace pathway

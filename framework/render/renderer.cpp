@@ -35,7 +35,7 @@ Renderer::Renderer(const RayTracer& tracer, const Camera& camera, const Integrat
     : tracer_(tracer),
       camera_(camera),
       integrator_(integrator),
-      wavefront_(dynamic_cast<const WavefrontIntegrator*>(&integrator)),
+      wavefront_(integrator.asWavefront()),
       stage1_(stage1),
       settings_(checked(settings)),
       filter_(settings.filter, settings.filterRadiusPixels(), stage1.profiles),
@@ -119,11 +119,18 @@ void Renderer::renderTileInBatches(Tile& tile, uint32_t firstSample, uint32_t sa
   const CurrentTodoLog logged(&todos_);
   const RenderContext context(tracer_, tile.counters);
   std::fill(tile.rays.begin(), tile.rays.end(), 0);
-  CameraSampleBatch batch;
-  std::vector<Vec2> filmPositions;
-  std::vector<uint32_t> pixelOfSample;                         // index into tile.rays
+  const size_t batchSize = wavefront_->batchSize();
+  thread_local CameraSampleBatch batch;  // kept between tiles: no allocation per tile
+  thread_local std::vector<Vec2> filmPositions;
+  thread_local std::vector<uint32_t> pixelOfSample;  // index into tile.rays
+  batch.clear();
+  filmPositions.clear();
+  pixelOfSample.clear();
   uint32_t expectedDimensions = Sampler::kMaxBlockDimensions;  // as in renderTile
+  auto cancelled = [cancel] { return cancel && cancel->load(std::memory_order_relaxed); };
+  // Renders the gathered samples and splats them; false when the render was cancelled first.
   auto flush = [&] {
+    if (cancelled()) return false;
     wavefront_->LiBatch(batch, context);
     expectedDimensions = batch.samples.back().dimension();
     for (size_t i = 0; i < batch.size(); ++i) {
@@ -133,13 +140,14 @@ void Renderer::renderTileInBatches(Tile& tile, uint32_t firstSample, uint32_t sa
     batch.clear();
     filmPositions.clear();
     pixelOfSample.clear();
+    return true;
   };
-  const size_t batchSize = wavefront_->batchSize();
   uint32_t pixel = 0;
   for (int y = tile.y0; y < tile.y1; ++y) {
     for (int x = tile.x0; x < tile.x1; ++x, ++pixel) {
-      if (cancel && cancel->load(std::memory_order_relaxed)) return clearPixelInProgress();
-      recordPixelInProgress(x, y);  // the batch's last pixel: close to where a crash would be
+      if (cancelled()) return clearPixelInProgress();
+      // The pixel being gathered: a crash in LiBatch is in a batch that ends here.
+      recordPixelInProgress(x, y);
       const uint64_t pixelKey = sampler_.pixelKey(x, y);
       for (uint32_t index = firstSample; index < firstSample + sampleCount; ++index) {
         SampleStream samples(sampler_, pixelKey, index, expectedDimensions);
@@ -147,11 +155,11 @@ void Renderer::renderTileInBatches(Tile& tile, uint32_t firstSample, uint32_t sa
         batch.add(camera_.generateRay(filmPosition), samples);
         filmPositions.push_back(filmPosition);
         pixelOfSample.push_back(pixel);
-        if (batch.size() == batchSize) flush();
+        if (batch.size() == batchSize && !flush()) return clearPixelInProgress();
       }
     }
   }
-  if (batch.size() > 0) flush();
+  if (batch.size() > 0) flush();  // a cancelled pass is dropped whole, so its result may go
   clearPixelInProgress();
 }
 

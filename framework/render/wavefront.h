@@ -51,6 +51,8 @@ class WavefrontIntegrator : public Integrator {
   // Fills batch.radiance and batch.rays, one per sample: for each, what Li would return.
   virtual void LiBatch(CameraSampleBatch& batch, const RenderContext& context) const = 0;
 
+  const WavefrontIntegrator* asWavefront() const final { return this; }
+
   // One sample: a batch of one.
   Color Li(const Ray& cameraRay, SampleStream& samples, const RenderContext& context) const final {
     CameraSampleBatch batch;
@@ -62,9 +64,9 @@ class WavefrontIntegrator : public Integrator {
 };
 
 // Traces rays[i] for every i in `which` (indices into `rays`) in packets of
-// RayTracer::kPacketSize, and stores the answers at hits[i] / blocked[i]. Inline, as everything a
-// solution file calls in the framework beyond the program's own use must be: a handout's compiled
-// reference stages find the framework's functions in the program, which links only what it uses.
+// RayTracer::kPacketSize, and stores the answers at hits[i] / blocked[i]. Inline: a handout's
+// compiled reference stages find the framework's functions in the program, which links only the
+// framework code it uses itself (RayTracer's packet queries come with the rest of RayTracer).
 inline void intersectAll(const RenderContext& context, const std::vector<Ray>& rays,
                          const std::vector<uint32_t>& which, RayKind kind,
                          std::vector<std::optional<SurfaceHit>>& hits) {

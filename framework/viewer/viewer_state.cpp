@@ -62,9 +62,9 @@ bool selectStage(ViewerState& state, int lane, int stage) {
       variant == Variant::Reference && findStageIntegrator(stage, variant)
           ? &findIntegrator(referenceIntegratorName(stage, ReferenceTracing::Fastest))
           : findStageIntegrator(stage, variant);
-  if (!info)
-    info = findStageIntegrator(stage,
-                               variant == Variant::Student ? Variant::Reference : Variant::Student);
+  if (!info && variant == Variant::Student && findStageIntegrator(stage, Variant::Reference))
+    info = &findIntegrator(referenceIntegratorName(stage, ReferenceTracing::Fastest));
+  if (!info) info = findStageIntegrator(stage, Variant::Student);
   if (!info) return false;
   selectIntegrator(state, lane, info->name);
   return true;
