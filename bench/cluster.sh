@@ -56,7 +56,7 @@ echo "(this node has $cores cores: no split can be more than ${cores}x faster he
 echo
 echo "== 3. one submission (the solutions as a student's files), all five stages, on one core"
 mkdir -p "$work/class/student"
-cp $(ls solutions/*/*.cpp | grep -v _wavefront) "$work/class/student/"  # the stage files a student hands in
+cp solutions/*/*.cpp "$work/class/student/"
 t=$(timed taskset -c 0 "$pathway" grade -q --submission "$work/class/student" --output "$work/graded")
 build=$(awk -F'\t' '$1 == "buildSeconds" {print $2}' "$work/graded/submission.tsv")
 grade=$(awk -F'\t' '$1 == "gradeSeconds" {print $2}' "$work/graded/submission.tsv")

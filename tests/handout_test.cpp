@@ -84,16 +84,14 @@ TEST_F(Handout, ShipsTheReferenceCompiledBuildsPassesItsSuiteAndGradesAsTheAutog
   EXPECT_GE(selfGrade.size(), 15u);
   EXPECT_EQ(selfGrade, autograderVerdicts(kSource + "/assignments", dir_ / "skeletons"));
 
-  // A submission compiled into the handout: finished stages, with a missing cos θ in stage 2
-  // (the stage files only: the references' wavefront versions are not a student's).
+  // A submission compiled into the handout: finished stages, with a missing cos θ in stage 2.
   const fs::path submission = dir_ / "submission";
   fs::create_directories(submission);
   const test::CommandOutcome prepared = test::runCommand(
-      "cp $(ls " + kSource + "/solutions/*/*.cpp | grep -v _wavefront) " + submission.string() +
-      " && sed -i " + "'s/visibility \\* local.z/visibility/' " +
-      (submission / "stage2_nested_ao.cpp").string() + " && for f in " + submission.string() +
-      "/*.cpp; do n=$(basename $f); " + "cp $f " + handout.string() +
-      "/assignments/${n%%_*}/$n; done && cd " + handout.string() +
+      "cp " + kSource + "/solutions/*/*.cpp " + submission.string() + " && sed -i " +
+      "'s/visibility \\* local.z/visibility/' " + (submission / "stage2_nested_ao.cpp").string() +
+      " && for f in " + submission.string() + "/*.cpp; do n=$(basename $f); " + "cp $f " +
+      handout.string() + "/assignments/${n%%_*}/$n; done && cd " + handout.string() +
       " && cmake --build --preset release --target pathway >/dev/null && " +
       "build/release/pathway grade -q --report " + (dir_ / "self-grade").string());
   EXPECT_EQ(prepared.exitCode, 1) << "a stage fails: " << prepared.output;

@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "render/stage_api.h"
+#include "render/wavefront.h"
 #include "stages/stage2.h"  // the stage's parameters: setup.params.<field>
 
 namespace pathway {
@@ -75,6 +76,111 @@ class NestedAmbientOcclusion : public Integrator {
 // Stage 2 hands its hemisphere sampling and AO estimate on to stages 3-5.
 const bool registered = registerStage<NestedAmbientOcclusion>(
     stage2(), Stage2Functions{sampleCosineHemisphere, cosineHemispherePdf, ambientOcclusionSample});
+
+// ---------------------------------------------------------------------------------------------
+// The wavefront version, "stage2@fast", for the renders that are not student code (never part of
+// the exercise): the batch's eye rays are traced in 16-ray Embree packets, then its M AO rays per
+// hit, all together. Each sample draws the same numbers and sums the same estimates in the same
+// order as above, so the images agree wherever packets and single rays report the same hits
+// (test: WavefrontStages.*).
+
+// ambientOcclusionSample (above), split where its ray is traced.
+class AmbientOcclusionWave {
+ public:
+  // Room for `count` AO estimates, none prepared yet.
+  void reset(size_t count) {
+    rays_.resize(count);
+    cosTheta_.resize(count);
+    pdf_.resize(count);
+    blocked_.resize(count);
+    traced_.clear();
+  }
+
+  // Estimate k: the direction from `u` around `hit` (stage 2's cosine sampling), its ray up to
+  // `distance`. A direction with no density gets no ray; its estimate is 0, as in stage 2.
+  void prepare(size_t k, const Stage2Functions& stage2, const SurfaceHit& hit, Vec2 u,
+               float distance) {
+    const Vec3 local = stage2.sampleCosineHemisphere(u);
+    cosTheta_[k] = local.z;
+    pdf_[k] = stage2.cosineHemispherePdf(local.z);
+    if (pdf_[k] <= 0.0f) return;
+    rays_[k] = hit.spawnRay(Frame(hit.normal).toWorld(local), distance);
+    traced_.push_back(static_cast<uint32_t>(k));
+  }
+
+  // Traces every prepared ray (AO rays count as secondary rays).
+  void trace(const RenderContext& context) {
+    occludedAll(context, rays_, traced_, RayKind::Secondary, blocked_);
+  }
+  const std::vector<uint32_t>& traced() const { return traced_; }
+
+  // V·cos θ / (π·p(ω)) for estimate k once traced; 0 where no ray was traced.
+  float estimate(size_t k) const {
+    if (pdf_[k] <= 0.0f) return 0.0f;
+    const float visibility = blocked_[k] ? 0.0f : 1.0f;
+    return visibility * cosTheta_[k] / (kPi * pdf_[k]);
+  }
+
+ private:
+  std::vector<Ray> rays_;
+  std::vector<float> cosTheta_, pdf_;
+  std::vector<uint8_t> blocked_;
+  std::vector<uint32_t> traced_;
+};
+
+class WavefrontNestedAmbientOcclusion : public WavefrontIntegrator {
+ public:
+  explicit WavefrontNestedAmbientOcclusion(const StageSetup<Stage2Params>& setup)
+      : aoRays_(setup.params.aoRays),
+        aoDistance_(setup.params.aoDistance),
+        stage2_(setup.kit.stage2()) {}
+
+  // M estimates per sample: fewer samples per batch as M grows, so its AO rays stay in cache.
+  size_t batchSize() const override {
+    return std::max<size_t>(RayTracer::kPacketSize, kBatchSize / static_cast<size_t>(aoRays_));
+  }
+
+  void LiBatch(CameraSampleBatch& batch, const RenderContext& context) const override {
+    const size_t n = batch.size(), m = static_cast<size_t>(aoRays_);
+    thread_local Scratch s;
+    s.hits.resize(n);
+    s.eye.resize(n);
+    s.ao.reset(n * m);
+    batch.radiance.assign(n, Color(0.0f));
+    batch.rays.assign(n, 1);  // the eye ray
+    for (uint32_t i = 0; i < n; ++i) s.eye[i] = i;
+    intersectAll(context, batch.cameraRays, s.eye, RayKind::Primary, s.hits);
+    for (uint32_t i = 0; i < n; ++i) {
+      if (!s.hits[i]) continue;
+      for (size_t j = 0; j < m; ++j)
+        s.ao.prepare(i * m + j, stage2_, *s.hits[i], batch.samples[i].next2D(), aoDistance_);
+    }
+    s.ao.trace(context);
+    for (const uint32_t k : s.ao.traced()) ++batch.rays[k / m];
+    for (uint32_t i = 0; i < n; ++i) {
+      if (!s.hits[i]) {
+        batch.radiance[i] = context.background();
+        continue;
+      }
+      float sum = 0.0f;  // in stage2@ref's order
+      for (size_t j = 0; j < m; ++j) sum += s.ao.estimate(i * m + j);
+      batch.radiance[i] = Color(sum / aoRays_);
+    }
+  }
+
+ private:
+  struct Scratch {
+    std::vector<std::optional<SurfaceHit>> hits;
+    std::vector<uint32_t> eye;
+    AmbientOcclusionWave ao;
+  };
+
+  int aoRays_;                     // M
+  float aoDistance_;               // D
+  const Stage2Functions& stage2_;  // this stage's own functions: the reference's stage 2
+};
+
+const bool registeredWavefront = registerWavefrontStage<WavefrontNestedAmbientOcclusion>(stage2());
 
 }  // namespace
 }  // namespace pathway
