@@ -77,7 +77,6 @@ class NestedAmbientOcclusion : public Integrator {
 const bool registered = registerStage<NestedAmbientOcclusion>(
     stage2(), Stage2Functions{sampleCosineHemisphere, cosineHemispherePdf, ambientOcclusionSample});
 
-// ---------------------------------------------------------------------------------------------
 // The wavefront version, "stage2@fast", for the renders that are not student code (never part of
 // the exercise): the batch's eye rays are traced in 16-ray Embree packets, then its M AO rays per
 // hit, all together. Each sample draws the same numbers and sums the same estimates in the same

@@ -45,7 +45,6 @@ class AmbientOcclusion4D : public Integrator {
 
 const bool registered = registerStage<AmbientOcclusion4D>(stage3());
 
-// ---------------------------------------------------------------------------------------------
 // The wavefront version, "stage3@fast", for the renders that are not student code (never part of
 // the exercise): all the batch's eye rays in 16-ray Embree packets, then all its AO rays. Each
 // sample draws the same numbers and computes the same expressions as above with the reference's

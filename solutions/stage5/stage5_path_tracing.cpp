@@ -14,7 +14,6 @@
 // point on a triangle in sampleLight, the area form of direct light in directLight, the path's
 // weights and Russian roulette above Li.
 #include <cmath>
-#include <numeric>
 
 #include "render/stage_api.h"
 #include "render/wavefront.h"
@@ -166,7 +165,6 @@ class PathTracer : public Integrator {
 
 const bool registered = registerStage<PathTracer>(stage5());
 
-// ---------------------------------------------------------------------------------------------
 // The wavefront version, "stage5@fast": this path tracer run on a batch of paths at once, for the
 // renders that are not student code (references, calibration, charts, cluster renders; never part
 // of the exercise). Each bounce of every path still alive is one wave: its rays are traced in
@@ -193,7 +191,7 @@ class WavefrontPathTracer : public WavefrontIntegrator {
     w.rays.assign(batch.cameraRays.begin(), batch.cameraRays.end());
     w.throughput.assign(n, Color(1.0f));
     w.active.resize(n);
-    std::iota(w.active.begin(), w.active.end(), 0u);
+    for (uint32_t i = 0; i < n; ++i) w.active[i] = i;  // every path starts
     RayKind kind = RayKind::Primary;
     bool addEmission = true;  // camera rays always; bounce rays only when NEE is off
 
