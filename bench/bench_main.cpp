@@ -9,6 +9,10 @@
 //                                       how cost grows: the tables of bench/growth.h, as CSV too
 //   pathway_bench ceiling [scene] [--width W] [--spp N] [--repeats R]
 //                                       stage5@ref vs a minimal path tracer on raw Embree
+//   pathway_bench fast [scene] [--width W] [--spp N] [--repeats R] [--calibrate SEEDS]
+//                                       the wavefront references vs the single-ray ones
+//   pathway_bench floor [scene] [--width W] [--spp N] [--repeats R]
+//                                       stage5@fast vs Embree's traversal of its rays alone
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
 
@@ -30,6 +34,7 @@
 #include "render/render_settings.h"
 #include "scene/gltf_loader.h"
 #include "startup.h"
+#include "traversal_floor.h"
 
 namespace pathway::bench {
 namespace {
@@ -236,6 +241,8 @@ constexpr const char* kUsage =
     "       pathway_bench growth [scene] [--out DIR] [--max-triangles N] [--width W] "
     "[--repeats R]\n"
     "       pathway_bench ceiling [scene] [--width W] [--spp N] [--repeats R]\n"
+    "       pathway_bench fast [scene] [--width W] [--spp N] [--repeats R] [--calibrate SEEDS]\n"
+    "       pathway_bench floor [scene] [--width W] [--spp N] [--repeats R]\n"
     "  rays:   raw Embree vs the framework, rays/s (default scene: the Cornell box; width 512,\n"
     "          best of 5 repeats; growth: best of 10)\n"
     "  stages: every stage vs raw Embree on the same rays\n"
@@ -248,7 +255,11 @@ constexpr const char* kUsage =
     "          (scripts/draw_growth.py DIR draws them)\n"
     "  ceiling: stage5@ref vs a minimal path tracer on raw Embree, the same image rendered in\n"
     "           turns (width 256, 64 spp, best of 3); exit status 1 when their global means\n"
-    "           differ by more than 1 % (or 4 standard errors, when noise is larger)\n";
+    "           differ by more than 1 % (or 4 standard errors, when noise is larger)\n"
+    "  fast:   stageN@fast vs stageN@ref: renders in turns, agreement, and grade\n"
+    "          --make-references / --calibrate SEEDS with and without --single-ray\n"
+    "  floor:  stage5@fast's render vs its own rays replayed through raw Embree packets (robust\n"
+    "          and non-robust BVH), for the image (width 256, 64 spp) and the viewer's pane\n";
 
 // A mistake on the command line: one message, the usage is not repeated.
 struct UsageError : PathwayError {
@@ -296,9 +307,9 @@ Arguments parseArguments(int argc, char** argv) {
   args.mode = argv[1];
   if (args.mode != "rays" && args.mode != "stages" && args.mode != "memory" &&
       args.mode != "growth" && args.mode != "startup" && args.mode != "ceiling" &&
-      args.mode != "fast")
+      args.mode != "fast" && args.mode != "floor")
     throw UsageError("unknown mode '" + args.mode +
-                     "' (rays, stages, memory, growth, startup, ceiling or fast)");
+                     "' (rays, stages, memory, growth, startup, ceiling, fast or floor)");
   for (int i = 2; i < argc; ++i) {
     const std::string arg = argv[i];
     auto value = [&]() -> std::string {
@@ -317,7 +328,7 @@ Arguments parseArguments(int argc, char** argv) {
       onlyFor("fast");
       args.calibrationSeeds = static_cast<int>(parseCount(arg, value(), 0, 100000, true));
     } else if (arg == "--spp") {
-      if (args.mode != "fast") onlyFor("ceiling");
+      if (args.mode != "fast" && args.mode != "floor") onlyFor("ceiling");
       args.spp = static_cast<uint32_t>(parseCount(arg, value(), setting::kSamplesPerPixel.minValue,
                                                   setting::kSamplesPerPixel.maxValue));
     } else if (arg == "--out") {
@@ -340,6 +351,17 @@ Arguments parseArguments(int argc, char** argv) {
   return args;
 }
 
+// The options every mode that renders one image shares, from the command line or their defaults.
+template <typename Options>
+Options imageOptions(const Arguments& args, const std::string& scene) {
+  Options options;
+  options.scene = scene;
+  options.width = args.width.value_or(options.width);
+  options.samplesPerPixel = args.spp.value_or(options.samplesPerPixel);
+  options.repeats = args.repeats.value_or(options.repeats);
+  return options;
+}
+
 int run(const Arguments& args) {
   const std::string scene = args.scene.value_or(PATHWAY_DEFAULT_SCENE);
   if (args.mode == "rays")
@@ -351,23 +373,13 @@ int run(const Arguments& args) {
     if (args.scene || args.width) throw UsageError("startup takes --repeats only");
     return benchStartup(args.repeats.value_or(7));
   }
-  if (args.mode == "ceiling") {
-    CeilingOptions ceiling;
-    ceiling.scene = scene;
-    ceiling.width = args.width.value_or(ceiling.width);
-    ceiling.samplesPerPixel = args.spp.value_or(ceiling.samplesPerPixel);
-    ceiling.repeats = args.repeats.value_or(ceiling.repeats);
-    return benchCeiling(ceiling);
-  }
+  if (args.mode == "ceiling") return benchCeiling(imageOptions<CeilingOptions>(args, scene));
   if (args.mode == "fast") {
-    FastOptions fast;
-    fast.scene = scene;
-    fast.width = args.width.value_or(fast.width);
-    fast.samplesPerPixel = args.spp.value_or(fast.samplesPerPixel);
-    fast.repeats = args.repeats.value_or(fast.repeats);
+    FastOptions fast = imageOptions<FastOptions>(args, scene);
     fast.calibrationSeeds = args.calibrationSeeds.value_or(fast.calibrationSeeds);
     return benchFast(fast);
   }
+  if (args.mode == "floor") return benchFloor(imageOptions<FloorOptions>(args, scene));
   GrowthOptions growth;
   growth.scene = scene;
   growth.width = args.width.value_or(growth.width);

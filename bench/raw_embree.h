@@ -62,20 +62,12 @@ class RawEmbree {
   // Up to 16 rays at once through rtcIntersect16, Embree's packet traversal: their distances as
   // intersect() gives them.
   void intersect16(const Ray* rays, size_t count, float* distances) const {
-    constexpr size_t kLanes = 16;
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     alignas(64) RTCRayHit16 packet;
     alignas(64) int valid[kLanes];
+    fillPacket(rays, count, valid, packet.ray);
     for (size_t lane = 0; lane < kLanes; ++lane) {
-      valid[lane] = lane < count ? -1 : 0;  // -1: a ray to trace
-      const RTCRay r = toEmbree(rays[std::min(lane, count - 1)]);
-      packet.ray.org_x[lane] = r.org_x, packet.ray.org_y[lane] = r.org_y;
-      packet.ray.org_z[lane] = r.org_z, packet.ray.dir_x[lane] = r.dir_x;
-      packet.ray.dir_y[lane] = r.dir_y, packet.ray.dir_z[lane] = r.dir_z;
-      packet.ray.tnear[lane] = r.tnear, packet.ray.tfar[lane] = r.tfar;
-      packet.ray.time[lane] = r.time, packet.ray.mask[lane] = r.mask;
-      packet.ray.id[lane] = r.id, packet.ray.flags[lane] = r.flags;
       packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
       packet.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
     }
@@ -84,12 +76,36 @@ class RawEmbree {
       distances[lane] =
           packet.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID ? kInfinity : packet.ray.tfar[lane];
   }
+  // Up to 16 shadow rays at once through rtcOccluded16: for each, whether it is blocked.
+  void occluded16(const Ray* rays, size_t count, bool* blocked) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    alignas(64) RTCRay16 packet;
+    alignas(64) int valid[kLanes];
+    fillPacket(rays, count, valid, packet);
+    rtcOccluded16(valid, scene_, &context, &packet);
+    for (size_t lane = 0; lane < count; ++lane) blocked[lane] = packet.tfar[lane] < 0.0f;
+  }
 
   // For code that needs the whole hit record (geometry, primitive, u, v, Ng), such as the raw
   // path tracer: it calls rtcIntersect1/rtcOccluded1 on this BVH itself.
   RTCScene handle() const { return scene_; }
 
  private:
+  static constexpr size_t kLanes = 16;
+
+  // The first `count` lanes hold the rays; the others repeat the last one and are masked off.
+  static void fillPacket(const Ray* rays, size_t count, int* valid, RTCRay16& packet) {
+    for (size_t lane = 0; lane < kLanes; ++lane) {
+      valid[lane] = lane < count ? -1 : 0;  // -1: a ray to trace
+      const RTCRay r = toEmbree(rays[std::min(lane, count - 1)]);
+      packet.org_x[lane] = r.org_x, packet.org_y[lane] = r.org_y, packet.org_z[lane] = r.org_z;
+      packet.dir_x[lane] = r.dir_x, packet.dir_y[lane] = r.dir_y, packet.dir_z[lane] = r.dir_z;
+      packet.tnear[lane] = r.tnear, packet.tfar[lane] = r.tfar, packet.time[lane] = r.time;
+      packet.mask[lane] = r.mask, packet.id[lane] = r.id, packet.flags[lane] = r.flags;
+    }
+  }
+
   static RTCRay toEmbree(const Ray& ray) {
     RTCRay r;
     r.org_x = ray.origin.x, r.org_y = ray.origin.y, r.org_z = ray.origin.z;

@@ -239,6 +239,20 @@ class Renderers:
 
 # ------------------------------------------------------------------------------------ sections
 
+def traversal_floor(a):
+    """`pathway_bench floor`'s seconds for the timed image, or None where it does not apply."""
+    bench = pathlib.Path(a.pathway).with_name("pathway_bench")
+    defaults = (a.max_depth, a.rr_depth, a.sampler) == (5, 3, "sobol")
+    if a.integrator != "stage5@fast" or not defaults or not os.access(bench, os.X_OK):
+        return None
+    done = subprocess.run([str(bench), "floor", a.scene, "--width", str(a.width), "--spp",
+                           str(a.spp), "--repeats", str(a.repeats)], capture_output=True, text=True)
+    if done.returncode != 0:
+        sys.exit(f"peers: pathway_bench floor failed:\n{done.stderr.strip()}")
+    line = next(l for l in done.stdout.splitlines() if l.startswith("floor: render="))
+    return {k: float(v) for k, v in re.findall(r"([a-z-]+)=([\d.]+)", line)}
+
+
 def section_time(rep, run, args):
     a = args
     rep.say(f"## 1. Time: {a.width}x{a.width}, {a.spp} spp, Pathway max-depth {a.max_depth} = "
@@ -294,7 +308,19 @@ def section_time(rep, run, args):
         ["Pathway outside the render: whole process − render s",
          f"{fmt_s(pw['wall'] - pw['render'])} ({100 * (1 - pw['render'] / pw['wall']):.0f} %)"],
     ]
-    rep.table("time_ratios", ["ratio", "value"], ratios)
+    floor = traversal_floor(a)
+    if floor:
+        ratios += [
+            ["Embree's traversal of stage5@fast's rays alone (robust BVH) / Mitsuba llvm render",
+             f"{floor['robust'] / llvm_render:.2f}"],
+            ["the same, non-robust BVH / Mitsuba llvm render",
+             f"{floor['non-robust'] / llvm_render:.2f}"],
+        ]
+    rep.table("time_ratios", ["ratio", "value"], ratios,
+              "The last two rows (when the settings are stage 5's defaults): `pathway_bench "
+              "floor` replays every ray stage5@fast traces for this image through raw Embree in "
+              "its 16-ray packets, on all threads, with nothing else: what these rays cost "
+              "before any shading, sampling or film." if floor else None)
 
     def best_cpu(report):
         return min(r["cpu"] for r in report["renders"][1:])

@@ -1,0 +1,27 @@
+// `pathway_bench floor`: how fast stage 5's renders could be if nothing but Embree's traversal
+// cost anything. It records every ray `stage5@fast` traces for one image, replays exactly those
+// rays through raw Embree in the same 16-ray packets (no shading, no sampling, no film), with
+// Pathway's robust BVH and with Embree's cheapest (non-robust) one, and sets the times beside the
+// render's own. The floor is what any renderer built on this Embree pays for these rays; the peers
+// benchmark divides it by Mitsuba's render time.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace pathway::bench {
+
+struct FloorOptions {
+  std::string scene;
+  int width = 256;  // the peers image; height from the camera's aspect ratio
+  uint32_t samplesPerPixel = 64;
+  int repeats = 3;         // best of this many, render and replays in turns
+  int viewerWidth = 640;   // the viewer's reference pane, one sample per pixel per image
+  int viewerHeight = 360;  // (0: leave the viewer's row out)
+};
+
+// Prints the table and a last line `floor: render=S robust=S non-robust=S` (seconds, for
+// bench/peers/peers.py). Returns 0.
+int benchFloor(const FloorOptions& options);
+
+}  // namespace pathway::bench
