@@ -19,6 +19,7 @@
 #include "render/integrator_registry.h"
 #include "render/recipe_builder.h"
 #include "render/render_session.h"
+#include "render/render_settings.h"
 #include "scene/gltf_loader.h"
 #include "stage_under_test.h"
 #include "test_scenes.h"
@@ -120,6 +121,25 @@ TEST(WavefrontStages, AmbientOcclusion4DGivesTheSingleRayReferencesImageBitForBi
 
 // The comparison above would pass if both names rendered with one integrator: check that a
 // wavefront integrator renders, and that a change to its estimator shows.
+// The grader is the equivalence test: every grading case of the stages that have a wavefront
+// version gets, from it, the replicate the single-ray reference renders, at the case's own size,
+// filter, sampler, parameters, spp and seed, so the references and their verdicts are the same.
+TEST(WavefrontStages, EveryGradingCaseGetsTheSingleRayReferencesReplicate) {
+  PATHWAY_REQUIRE_WAVEFRONT();
+  for (int stage : {2, 3, 5}) {
+    for (const GradingCase* c : gradingCasesOf(stage)) {
+      const Scene scene = loadScene(scenePath(c->scene));
+      const RayTracer tracer(scene);
+      auto replicate = [&](ReferenceTracing tracing) {
+        return runRender(tracer, c->recipe(Variant::Reference, EarlierStages::Reference,
+                                           kReferenceSeed + 3, tracing));
+      };
+      expectSameImage(replicate(ReferenceTracing::SingleRay), replicate(ReferenceTracing::Fastest),
+                      c->id());
+    }
+  }
+}
+
 TEST(WavefrontStages, TheFastNamesAreWavefrontIntegratorsAndOtherParametersChangeTheImage) {
   PATHWAY_REQUIRE_WAVEFRONT();
   const Scene scene = loadScene(scenePath("cornell_box.gltf"));
