@@ -107,7 +107,7 @@ int benchFloor(const FloorOptions& options) {
   RayTracer tracer(scene);
   const RawEmbree robust(scene), nonRobust(scene, RTC_SCENE_FLAG_NONE);
   const std::string name = referenceIntegratorName(5, ReferenceTracing::Fastest);
-  const int height = scene.imageHeight(options.width);
+  const int height = options.width;  // square, as the peers benchmark renders it
   std::printf(
       "floor: %s, %s at its defaults, box filter, %d threads, best of %d (render and replays in "
       "turns); load average %.2f at the start\n"

@@ -13,7 +13,7 @@ namespace pathway::bench {
 
 struct FloorOptions {
   std::string scene;
-  int width = 256;  // the peers image; height from the camera's aspect ratio
+  int width = 256;  // the peers image, square
   uint32_t samplesPerPixel = 64;
   int repeats = 3;         // best of this many, render and replays in turns
   int viewerWidth = 640;   // the viewer's reference pane, one sample per pixel per image
