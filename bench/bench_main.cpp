@@ -328,7 +328,8 @@ Arguments parseArguments(int argc, char** argv) {
       onlyFor("fast");
       args.calibrationSeeds = static_cast<int>(parseCount(arg, value(), 0, 100000, true));
     } else if (arg == "--spp") {
-      if (args.mode != "fast" && args.mode != "floor") onlyFor("ceiling");
+      if (args.mode != "ceiling" && args.mode != "fast" && args.mode != "floor")
+        throw UsageError(arg + " is an option of `ceiling`, `fast` and `floor` only");
       args.spp = static_cast<uint32_t>(parseCount(arg, value(), setting::kSamplesPerPixel.minValue,
                                                   setting::kSamplesPerPixel.maxValue));
     } else if (arg == "--out") {

@@ -5,10 +5,12 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdio>
 #include <vector>
 
 #include "bench_kit.h"
+#include "core/error.h"
 #include "render/integrator_registry.h"
 #include "render/recipe_builder.h"
 #include "render/render_session.h"
@@ -17,10 +19,12 @@
 namespace pathway::bench {
 namespace {
 
-constexpr size_t kLanes = 16;  // Embree's widest packet, the one stage5@fast traces
+constexpr int kLanes = RayTracer::kPacketSize;
+// The log holds 32 bytes a ray (stage 5 traces about 4.5 a sample) and the replay a copy of 28:
+// a bigger image should be measured at fewer samples per pixel, which does not change the rates.
+constexpr uint64_t kMostSamples = uint64_t(1) << 23;  // twice the peers image's 256 x 256 x 64
 
-// A run of at most 16 consecutive logged rays of one kind: the packets the wavefront traced (it
-// logs each packet's rays in order, and a bounce's closest-hit and shadow rays alternate).
+// One query as the render made it: a packet of up to 16 rays of one kind, or a single ray.
 struct Packet {
   size_t first, count;
   bool occlusionOnly;
@@ -29,40 +33,70 @@ struct Packet {
 std::vector<Packet> packetsOf(const std::vector<LoggedRay>& log) {
   std::vector<Packet> packets;
   for (size_t i = 0; i < log.size(); ++i) {
-    if (packets.empty() || packets.back().count == kLanes ||
-        packets.back().occlusionOnly != log[i].occlusionOnly)
+    if (packets.empty() || log[i].startsPacket || packets.back().count == size_t(kLanes))
       packets.push_back({i, 0, log[i].occlusionOnly});
     ++packets.back().count;
   }
   return packets;
 }
 
-// The logged rays, packet by packet, on all cores.
+// What a replay found: closest-hit rays that hit something, shadow rays that were blocked.
+struct Answers {
+  uint64_t hits = 0, blocked = 0;
+  bool operator==(const Answers& o) const { return hits == o.hits && blocked == o.blocked; }
+};
+
+// The logged rays, query by query, on all cores.
 class PacketReplay {
  public:
   explicit PacketReplay(const std::vector<LoggedRay>& log) : packets_(packetsOf(log)) {
     rays_.reserve(log.size());
     for (const LoggedRay& r : log) rays_.push_back(r.ray);
   }
+  size_t rays() const { return rays_.size(); }
+
   double seconds(const RawEmbree& raw) const {
-    return secondsOf([&] {
-      tbb::parallel_for(tbb::blocked_range<size_t>(0, packets_.size(), 64),
-                        [&](const tbb::blocked_range<size_t>& range) {
-                          float distances[kLanes];
-                          bool blocked[kLanes];
-                          for (size_t p = range.begin(); p != range.end(); ++p) {
-                            const Packet& packet = packets_[p];
-                            const Ray* rays = &rays_[packet.first];
-                            if (packet.occlusionOnly)
-                              raw.occluded16(rays, packet.count, blocked);
-                            else
-                              raw.intersect16(rays, packet.count, distances);
-                          }
-                        });
+    return secondsOf([&] { trace(raw); });
+  }
+  // The same replay, counting its answers (untimed: the counting is not traversal).
+  Answers answers(const RawEmbree& raw) const { return trace(raw); }
+  // Each ray on its own through rtcIntersect1/rtcOccluded1, to check the packets against.
+  Answers singleRayAnswers(const RawEmbree& raw) const {
+    std::atomic<uint64_t> hits{0}, blocked{0};
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, packets_.size(), 64), [&](const auto& range) {
+      uint64_t h = 0, b = 0;
+      for (size_t p = range.begin(); p != range.end(); ++p)
+        for (size_t i = packets_[p].first; i < packets_[p].first + packets_[p].count; ++i)
+          packets_[p].occlusionOnly ? b += raw.occluded(rays_[i])
+                                    : h += raw.intersect(rays_[i]) < kInfinity;
+      hits += h, blocked += b;
     });
+    return {hits, blocked};
   }
 
  private:
+  Answers trace(const RawEmbree& raw) const {
+    std::atomic<uint64_t> hits{0}, blocked{0};
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, packets_.size(), 64), [&](const auto& range) {
+      float distances[kLanes];
+      bool occluded[kLanes];
+      uint64_t h = 0, b = 0;
+      for (size_t p = range.begin(); p != range.end(); ++p) {
+        const Packet& packet = packets_[p];
+        const Ray* rays = &rays_[packet.first];
+        if (packet.occlusionOnly) {
+          raw.occluded16(rays, packet.count, occluded);
+          b += std::count(occluded, occluded + packet.count, true);
+        } else {
+          raw.intersect16(rays, packet.count, distances);
+          h += packet.count - std::count(distances, distances + packet.count, kInfinity);
+        }
+      }
+      hits += h, blocked += b;  // once per range: keeps the atomics out of the timed loop
+    });
+    return {hits, blocked};
+  }
+
   std::vector<Packet> packets_;
   std::vector<Ray> rays_;
 };
@@ -83,17 +117,36 @@ FloorRow measure(const Scene& scene, RayTracer& tracer, const RawEmbree& robust,
                             .filter(FilterType::Box)
                             .threads(threads));
   };
+  const RenderRecipe timed = recipe(0);
+  const uint64_t samples = uint64_t(width) * uint64_t(height) * spp;
+  if (samples > kMostSamples)
+    throw PathwayError(std::to_string(width) + "x" + std::to_string(height) + " at " +
+                       std::to_string(spp) + " spp is " + std::to_string(samples) +
+                       " samples; the floor logs every ray of at most " +
+                       std::to_string(kMostSamples) + ": use a smaller --width or --spp");
+  FloorRow row;
+  // The first render counts the rays, so that the log is allocated once.
+  row.render =
+      secondsOf([&] { row.rays = runRender(tracer, camera, timed).stats.counters.totalRays(); });
   std::vector<LoggedRay> log;
-  tracer.setRayLog(&log);  // one thread: the log is not synchronised
+  log.reserve(row.rays);
+  tracer.setRayLog(&log);  // a one-thread render of the same image: the log is not synchronised
   runRender(tracer, camera, recipe(1));
   tracer.setRayLog(nullptr);
   const PacketReplay replay(log);
-  FloorRow row;
-  row.rays = log.size();
   log = {};
-  const RenderRecipe timed = recipe(0);
+  if (replay.rays() != row.rays)
+    throw PathwayError("the logged render traced " + std::to_string(replay.rays()) +
+                       " rays, the timed one " + std::to_string(row.rays));
+  // The packets must find what single rays find, or the replay is not these rays' traversal.
+  const Answers packets = replay.answers(robust), single = replay.singleRayAnswers(robust);
+  if (!(packets == single))
+    throw PathwayError("the replayed packets found " + std::to_string(packets.hits) + " hits and " +
+                       std::to_string(packets.blocked) + " blocked shadow rays, single rays " +
+                       std::to_string(single.hits) + " and " + std::to_string(single.blocked));
   for (int i = 0; i < repeats; ++i) {
-    row.render = std::min(row.render, secondsOf([&] { runRender(tracer, camera, timed); }));
+    if (i > 0)
+      row.render = std::min(row.render, secondsOf([&] { runRender(tracer, camera, timed); }));
     row.robust = std::min(row.robust, replay.seconds(robust));
     row.nonRobust = std::min(row.nonRobust, replay.seconds(nonRobust));
   }
@@ -111,8 +164,9 @@ int benchFloor(const FloorOptions& options) {
   std::printf(
       "floor: %s, %s at its defaults, box filter, %d threads, best of %d (render and replays in "
       "turns); load average %.2f at the start\n"
-      "replay: the render's own rays, logged, through raw Embree in its 16-ray packets, nothing "
-      "else\n\n",
+      "replay: the rays of a one-thread render of the same image, logged, through raw Embree in "
+      "the render's own packets, nothing else (checked: the packets find what single rays "
+      "find)\n\n",
       options.scene.c_str(), name.c_str(), tbb::info::default_concurrency(), options.repeats,
       loadAverage());
   const FloorRow image = measure(scene, tracer, robust, nonRobust, options.width, height,
@@ -120,24 +174,22 @@ int benchFloor(const FloorOptions& options) {
   std::printf("%dx%d, %u spp, %llu rays          %10s %14s\n", options.width, height,
               options.samplesPerPixel, static_cast<unsigned long long>(image.rays), "seconds",
               "÷ render");
-  auto line = [](const char* what, double seconds, double render) {
-    std::printf("  %-38s %10.3f %14.3f\n", what, seconds, seconds / render);
+  auto line = [](const std::string& what, double seconds, double render) {
+    std::printf("  %-38s %10.3f %14.3f\n", what.c_str(), seconds, seconds / render);
   };
-  line((name + " render, in this process").c_str(), image.render, image.render);
+  line(name + " render, in this process", image.render, image.render);
   line("replay, robust BVH (Pathway's)", image.robust, image.render);
   line("replay, non-robust BVH", image.nonRobust, image.render);
 
-  if (options.viewerWidth > 0) {
-    // Four images' worth of samples, timed together: one is too short to time well.
-    constexpr uint32_t kImages = 4;
-    const FloorRow pane = measure(scene, tracer, robust, nonRobust, options.viewerWidth,
-                                  options.viewerHeight, kImages, options.repeats);
-    std::printf("\nviewer's pane, %dx%d, 1 spp per image     %10s\n", options.viewerWidth,
-                options.viewerHeight, "images/s");
-    std::printf("  %-38s %10.1f\n", (name + " render, no UI").c_str(), kImages / pane.render);
-    std::printf("  %-38s %10.1f\n", "replay, robust BVH (Pathway's)", kImages / pane.robust);
-    std::printf("  %-38s %10.1f\n", "replay, non-robust BVH", kImages / pane.nonRobust);
-  }
+  // Four images' worth of samples, timed together: one is too short to time well.
+  constexpr uint32_t kImages = 4;
+  const FloorRow pane = measure(scene, tracer, robust, nonRobust, options.viewerWidth,
+                                options.viewerHeight, kImages, options.repeats);
+  std::printf("\nviewer's pane, %dx%d, 1 spp per image     %10s\n", options.viewerWidth,
+              options.viewerHeight, "images/s");
+  std::printf("  %-38s %10.1f\n", (name + " render, no UI").c_str(), kImages / pane.render);
+  std::printf("  %-38s %10.1f\n", "replay, robust BVH (Pathway's)", kImages / pane.robust);
+  std::printf("  %-38s %10.1f\n", "replay, non-robust BVH", kImages / pane.nonRobust);
   std::printf("floor: render=%.4f robust=%.4f non-robust=%.4f\n", image.render, image.robust,
               image.nonRobust);
   return 0;

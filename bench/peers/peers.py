@@ -247,9 +247,11 @@ def traversal_floor(a):
         return None
     done = subprocess.run([str(bench), "floor", a.scene, "--width", str(a.width), "--spp",
                            str(a.spp), "--repeats", str(a.repeats)], capture_output=True, text=True)
-    if done.returncode != 0:
-        sys.exit(f"peers: pathway_bench floor failed:\n{done.stderr.strip()}")
-    line = next(l for l in done.stdout.splitlines() if l.startswith("floor: render="))
+    line = next((l for l in done.stdout.splitlines() if l.startswith("floor: render=")), None)
+    if done.returncode != 0 or line is None:  # the timings stand without it: say so, go on
+        print(f"peers: pathway_bench floor failed, the floor rows are left out:\n"
+              f"{done.stderr.strip()}", file=sys.stderr)
+        return None
     return {k: float(v) for k, v in re.findall(r"([a-z-]+)=([\d.]+)", line)}
 
 

@@ -202,7 +202,7 @@ void fillPacket(const Ray rays[], const uint32_t which[], int count,
 void RayTracer::logQueries(const Ray rays[], const uint32_t which[], int count,
                            bool occlusionOnly) const {
   if (log_)
-    for (int i = 0; i < count; ++i) log_->push_back({rays[which[i]], occlusionOnly});
+    for (int i = 0; i < count; ++i) log_->push_back({rays[which[i]], occlusionOnly, i == 0});
 }
 
 void RayTracer::intersectPacket(const Ray rays[], const uint32_t which[], int count, RayKind kind,

@@ -17,7 +17,8 @@ namespace pathway {
 // One traced ray, as recorded for benchmarks that replay a render's exact ray mix.
 struct LoggedRay {
   Ray ray;
-  bool occlusionOnly;  // occluded() rather than intersect()
+  bool occlusionOnly;        // occluded() rather than intersect()
+  bool startsPacket = true;  // the first ray of a packet query, or a single-ray query
 };
 
 // Scenes with at least this many triangles get Embree's compact BVH (less memory, slower rays).
