@@ -1,6 +1,5 @@
 #include "growth.h"
 
-#include <embree3/rtcore.h>
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
 
@@ -22,6 +21,7 @@
 #include "render/recipe_builder.h"
 #include "render/render_session.h"
 #include "sampling/pcg32.h"
+#include "scene/embree.h"
 #include "scene/gltf_loader.h"
 #include "spawn.h"
 

@@ -3,11 +3,10 @@
 // the framework in between. The yardstick the benchmarks hold the framework's ray queries against.
 #pragma once
 
-#include <embree3/rtcore.h>
-
 #include <algorithm>
 
 #include "core/error.h"
+#include "scene/embree.h"
 #include "scene/ray_tracer.h"
 #include "scene/scene.h"
 
@@ -44,26 +43,20 @@ class RawEmbree {
 
   // Returns the hit distance, or infinity.
   float intersect(const Ray& ray) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
     RTCRayHit rh;
     rh.ray = toEmbree(ray);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(scene_, &context, &rh);
+    embree::intersect1(scene_, rh);
     return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? kInfinity : rh.ray.tfar;
   }
   bool occluded(const Ray& ray) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
     RTCRay r = toEmbree(ray);
-    rtcOccluded1(scene_, &context, &r);
+    embree::occluded1(scene_, r);
     return r.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
   }
   // Up to 16 rays at once through rtcIntersect16, Embree's packet traversal: their distances as
   // intersect() gives them.
   void intersect16(const Ray* rays, size_t count, float* distances) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
     alignas(64) RTCRayHit16 packet;
     alignas(64) int valid[kLanes];
     fillPacket(rays, count, valid, packet.ray);
@@ -71,19 +64,17 @@ class RawEmbree {
       packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
       packet.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
     }
-    rtcIntersect16(valid, scene_, &context, &packet);
+    embree::intersect16(valid, scene_, packet);
     for (size_t lane = 0; lane < count; ++lane)
       distances[lane] =
           packet.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID ? kInfinity : packet.ray.tfar[lane];
   }
   // Up to 16 shadow rays at once through rtcOccluded16: for each, whether it is blocked.
   void occluded16(const Ray* rays, size_t count, bool* blocked) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
     alignas(64) RTCRay16 packet;
     alignas(64) int valid[kLanes];
     fillPacket(rays, count, valid, packet);
-    rtcOccluded16(valid, scene_, &context, &packet);
+    embree::occluded16(valid, scene_, packet);
     for (size_t lane = 0; lane < count; ++lane) blocked[lane] = packet.tfar[lane] < 0.0f;
   }
 

@@ -94,8 +94,6 @@ RawPathImage RawPathTracer::render(const Camera& camera, const RawPathSettings& 
 template <typename Numbers>
 Color RawPathTracer::radiance(const Ray& cameraRay, const RawPathSettings& settings,
                               Numbers& numbers, RayCounters& rays) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
   Color result(0.0f);
   Color throughput(1.0f);
   Vec3 origin = cameraRay.origin;
@@ -105,7 +103,7 @@ Color RawPathTracer::radiance(const Ray& cameraRay, const RawPathSettings& setti
     RTCRayHit rayHit;
     rayHit.ray = embreeRay(origin, direction, kInfinity);
     rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(embree_, &context, &rayHit);
+    embree::intersect1(embree_, rayHit);
     ++(bounce == 0 ? rays.primary : rays.secondary);
     if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) {
       result += throughput * scene_.background;  // NEE never samples the background
@@ -134,8 +132,7 @@ Color RawPathTracer::radiance(const Ray& cameraRay, const RawPathSettings& setti
     // Every ray leaving this point goes into the hemisphere of `normal`, so one offset serves all.
     const Vec3 leaving = offsetRayOrigin(position, normal);
 
-    result +=
-        throughput * directLight(position, leaving, normal, shading.albedo, numbers, context, rays);
+    result += throughput * directLight(position, leaving, normal, shading.albedo, numbers, rays);
 
     // One cosine-weighted continuation: BRDF · cos / pdf = (albedo / π) · cos / (cos / π).
     const Vec2 uDirection = numbers.next2D();
@@ -158,8 +155,7 @@ Color RawPathTracer::radiance(const Ray& cameraRay, const RawPathSettings& setti
 // Next-event estimation: one shadow ray to a uniform point on an emitter picked by area.
 template <typename Numbers>
 Color RawPathTracer::directLight(const Vec3& position, const Vec3& leaving, const Vec3& normal,
-                                 const Color& albedo, Numbers& numbers,
-                                 RTCIntersectContext& context, RayCounters& rays) const {
+                                 const Color& albedo, Numbers& numbers, RayCounters& rays) const {
   const float uPick = numbers.next1D();
   const Vec2 uPoint = numbers.next2D();
   if (lights_.empty()) return Color(0.0f);
@@ -183,7 +179,7 @@ Color RawPathTracer::directLight(const Vec3& position, const Vec3& leaving, cons
   // of the emitter, so the emitter itself cannot block it.
   const Vec3 end = offsetRayOrigin(target, cosLight > 0.0f ? light.normal : -light.normal);
   RTCRay shadow = embreeRay(leaving, end - leaving, 1.0f);
-  rtcOccluded1(embree_, &context, &shadow);
+  embree::occluded1(embree_, shadow);
   ++rays.shadow;
   if (shadow.tfar < 0.0f) return Color(0.0f);  // Embree sets tfar to -inf when blocked
   // L_e · (albedo / π) · cos θ_x · |cos θ_y| / d² / p_A, with p_A = P(triangle) / area.

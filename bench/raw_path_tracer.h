@@ -62,8 +62,7 @@ class RawPathTracer {
   // `leaving`: the hit point already moved off its surface to the side of `normal`.
   template <typename Numbers>
   Color directLight(const Vec3& position, const Vec3& leaving, const Vec3& normal,
-                    const Color& albedo, Numbers& numbers, RTCIntersectContext& context,
-                    RayCounters& rays) const;
+                    const Color& albedo, Numbers& numbers, RayCounters& rays) const;
 
   const Scene& scene_;
   RTCScene embree_;

@@ -11,6 +11,7 @@
 
 #include "sampling/pcg32.h"
 #include "scene/camera.h"
+#include "scene/embree.h"
 #include "test_scenes.h"
 
 namespace pathway {

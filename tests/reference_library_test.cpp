@@ -91,6 +91,9 @@ TEST_F(ReferenceLibrary, ARefusedLibraryIsNamedWithItsReason) {
       {copy("other_platform.so",
             withSealLine(bytes_, "platform", "platform ubuntu 24.04 aarch64, GNU 13")),
        "was built for ubuntu 24.04 aarch64, GNU 13, and this program for"},
+      {copy("other_layout.so", withSealLine(bytes_, "layout", "layout Vec3 16, Ray 32")),
+       "other sizes of the types it shares with the program (Vec3 16, Ray 32; this program: Vec3 "
+       "12, "},
   };
   for (const auto& [file, reason] : refused) {
     const std::string problem = referenceLibraryProblem(file);

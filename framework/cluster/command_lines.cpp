@@ -13,6 +13,15 @@ std::string flag(const OptionSpec& setting) {
   return "--" + setting.name;
 }
 
+// A subcommand's first words: its name, and -q when quiet. (Word by word: a one-word initializer
+// list followed by push_back draws a false -Warray-bounds from GCC 14.)
+std::vector<std::string> subcommand(const char* name, bool quiet) {
+  std::vector<std::string> words;
+  words.push_back(name);
+  if (quiet) words.push_back(kQuiet);
+  return words;
+}
+
 void append(std::vector<std::string>& arguments, const std::vector<std::string>& more) {
   arguments.insert(arguments.end(), more.begin(), more.end());
 }
@@ -32,8 +41,7 @@ std::vector<std::string> RenderPartCommand::toArguments() const {
 }
 
 std::vector<std::string> MergeCommand::toArguments() const {
-  std::vector<std::string> arguments = {"merge"};
-  if (quiet) arguments.push_back(kQuiet);
+  std::vector<std::string> arguments = subcommand("merge", quiet);
   append(arguments, {flag(setting::kExposure), std::to_string(exposure)});
   append(arguments, parts);
   for (const std::string& output : outputs) append(arguments, {"-o", output});
@@ -47,16 +55,14 @@ std::vector<std::string> GradeOptionsCheckCommand::toArguments() const {
 }
 
 std::vector<std::string> SubmissionGradeCommand::toArguments() const {
-  std::vector<std::string> arguments = {"grade"};
-  if (quiet) arguments.push_back(kQuiet);
+  std::vector<std::string> arguments = subcommand("grade", quiet);
   append(arguments, {"--submission", submission, "--output", output});
   append(arguments, gradeArguments);
   return arguments;
 }
 
 std::vector<std::string> ClassTableCommand::toArguments() const {
-  std::vector<std::string> arguments = {"grade"};
-  if (quiet) arguments.push_back(kQuiet);
+  std::vector<std::string> arguments = subcommand("grade", quiet);
   append(arguments, {"--submissions", submissions, "--output", output, "--table-only"});
   return arguments;
 }

@@ -21,7 +21,8 @@ struct CaseResult {
   int stage = 0;        // 0: a direct comparison of two files
   bool passed = false;
   std::string problem;  // set when the case could not be compared (crash, missing reference, ...)
-  std::string note;     // how a failure was confirmed (or found to be chance)
+  std::string note;     // how a failure was confirmed (or found to be chance); for two files,
+                        // how their pixels differ
   bool crashed = false, timedOut = false;
   std::vector<std::string> todos;  // unfinished stage code that ran ("file:line")
   bool compared = false;           // `comparison` and the images below are filled in

@@ -89,7 +89,8 @@ std::string referenceIntegratorFor(const std::string& name, ReferenceTracing tra
   return referenceIntegratorName(it->second.stage, tracing);
 }
 
-const IntegratorInfo& findIntegrator(const std::string& name) {
+const IntegratorInfo& findIntegrator(std::string_view requested) {
+  const std::string name(requested);
   auto it = registry().find(name);
   if (it != registry().end()) return it->second;
   std::string known;

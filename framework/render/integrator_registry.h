@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/variant.h"
@@ -58,8 +59,9 @@ bool registerWavefrontStageIntegrator(int stage, IntegratorFactory factory);
 // (render/stage_library.h) replaced a built-in stage.
 const std::vector<std::string>& registrationLog();
 
-// Throws PathwayError listing the known names when `name` is unknown.
-const IntegratorInfo& findIntegrator(const std::string& name);
+// Throws PathwayError listing the known names when `name` is unknown. (A view, not a string
+// reference: the result outlives a temporary name, and GCC 14 would warn that it might not.)
+const IntegratorInfo& findIntegrator(std::string_view name);
 // Stage `stage` of `variant`, or nullptr when it is not built in.
 const IntegratorInfo* findStageIntegrator(int stage, Variant variant);
 // All integrators, sorted by stage, student before reference.

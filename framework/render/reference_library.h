@@ -1,10 +1,13 @@
 // The reference stages as a compiled library. A student handout has no solutions/, so
 // scripts/make-handout ships the five reference stages as reference/libpathway_reference.so:
 // built from solutions/ with release flags, no symbol table, and sealed with a footer that names
-// the platform and the framework's stage interface it was built for, and a CRC-32 of everything
-// before the footer. The program checks the seal before it loads the file, so a library of
-// another platform or framework version, a truncated or a corrupt one is never loaded: it gets
-// one message naming the file and why, and the program works on without the reference stages.
+// the platform (processor and C++ ABI), the framework's stage interface and the layout of the
+// types the library shares with the program, and a CRC-32 of everything before the footer. The
+// program checks the seal before it loads the file, so a library of another platform or
+// framework version, a truncated or a corrupt one is never loaded: it gets one message naming the
+// file and why, and the program works on without the reference stages. The distribution is not
+// part of the platform: one library serves Debian 12 and 13 (scripts/make-handout checks that it
+// needs no newer C or C++ runtime than Debian 12 has).
 #pragma once
 
 #include <string>
@@ -48,9 +51,11 @@ std::string referenceLibraryProblem(const std::string& path);
 // after linking it). Throws PathwayError naming the file when it cannot.
 void sealReferenceLibrary(const std::string& path);
 
-// This build's platform ("debian 12 x86_64, GNU 12") and stage interface (a hash of the framework
-// headers that stage files include, scripts/stage-interface.cmake).
+// This build's platform ("Linux x86_64, GNU C++"), stage interface (a hash of the framework
+// headers that stage files include, scripts/stage-interface.cmake) and the sizes of the types a
+// stage library shares with the program ("Vec3 12, Ray 28, ...").
 const char* buildPlatform();
 const char* stageInterface();
+std::string interfaceLayout();
 
 }  // namespace pathway

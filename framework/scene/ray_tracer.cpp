@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "scene/embree.h"
 
 namespace pathway {
 namespace {
@@ -76,45 +77,49 @@ RTCRay toEmbree(const Ray& ray) {
 
 }  // namespace
 
-RayTracer::RayTracer(const Scene& scene) : scene_(scene), sceneHash_(scene.contentHash()) {
-  device_ = sharedDevice();
+struct RayTracer::Bvh {
+  RTCScene scene = nullptr;
+  ~Bvh() {
+    if (scene) rtcReleaseScene(scene);
+  }
+};
+
+RayTracer::RayTracer(const Scene& scene)
+    : scene_(scene), bvh_(std::make_unique<Bvh>()), sceneHash_(scene.contentHash()) {
+  RTCDevice device = sharedDevice();
   const long long bytesBefore = deviceState.bytes.load();
-  rtcScene_ = rtcNewScene(device_);
+  RTCScene rtcScene = bvh_->scene = rtcNewScene(device);
   // Robust traversal: rays through shared edges never slip between two triangles, which matters
   // for closed scenes such as the furnace (exactly at a vertex a few still can: see
   // RayTracer.RaysAimedAtSharedEdgesAlwaysHitAndAtVerticesNearlyAlways).
-  rtcSetSceneFlags(rtcScene_, bvhFlags(scene.triangleCount()));
+  rtcSetSceneFlags(rtcScene, bvhFlags(scene.triangleCount()));
   for (uint32_t meshIndex = 0; meshIndex < scene.meshes.size(); ++meshIndex) {
     const Mesh& mesh = scene.meshes[meshIndex];
-    RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                mesh.positions.data(), 0, sizeof(Vec3), mesh.positions.size());
     rtcSetSharedGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                mesh.triangles.data(), 0, sizeof(glm::uvec3), mesh.triangles.size());
     rtcCommitGeometry(geometry);
-    rtcAttachGeometryByID(rtcScene_, geometry, meshIndex);
+    rtcAttachGeometryByID(rtcScene, geometry, meshIndex);
     rtcReleaseGeometry(geometry);
   }
-  rtcCommitScene(rtcScene_);
+  rtcCommitScene(rtcScene);
   bvhBytes_ = static_cast<size_t>(deviceState.bytes.load() - bytesBefore);
   throwIfEmbreeFailed(scene.sourcePath + ": building the BVH failed");
 }
 
-RayTracer::~RayTracer() {
-  if (rtcScene_) rtcReleaseScene(rtcScene_);
-}
+RayTracer::~RayTracer() = default;
 
 std::optional<SurfaceHit> RayTracer::intersect(const Ray& ray, RayKind kind,
                                                RayCounters& counters) const {
   counters.count(kind);
   if (log_) log_->push_back({ray, false});
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
   RTCRayHit rayHit;
   rayHit.ray = toEmbree(ray);
   rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(rtcScene_, &context, &rayHit);
+  embree::intersect1(bvh_->scene, rayHit);
   if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
   return surfaceHit(ray, rayHit.hit.geomID, rayHit.hit.primID, rayHit.ray.tfar, rayHit.hit.u,
                     rayHit.hit.v, Vec3(rayHit.hit.Ng_x, rayHit.hit.Ng_y, rayHit.hit.Ng_z));
@@ -162,10 +167,8 @@ SurfaceHit RayTracer::surfaceHit(const Ray& ray, uint32_t meshIndex, uint32_t tr
 bool RayTracer::occluded(const Ray& ray, RayKind kind, RayCounters& counters) const {
   counters.count(kind);
   if (log_) log_->push_back({ray, true});
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
   RTCRay r = toEmbree(ray);
-  rtcOccluded1(rtcScene_, &context, &r);
+  embree::occluded1(bvh_->scene, r);
   return r.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
 }
 
@@ -216,9 +219,7 @@ void RayTracer::intersectPacket(const Ray rays[], const uint32_t which[], int co
     packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
     packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
   }
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  rtcIntersect16(valid, rtcScene_, &context, &packet);
+  embree::intersect16(valid, bvh_->scene, packet);
   for (int i = 0; i < count; ++i) {
     std::optional<SurfaceHit>& hit = hits[which[i]];
     if (packet.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) {
@@ -238,9 +239,7 @@ void RayTracer::occludedPacket(const Ray rays[], const uint32_t which[], int cou
   alignas(64) int valid[kPacketSize];
   alignas(64) RTCRay16 packet;
   fillPacket(rays, which, count, valid, packet);
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  rtcOccluded16(valid, rtcScene_, &context, &packet);
+  embree::occluded16(valid, bvh_->scene, packet);
   for (int i = 0; i < count; ++i) blocked[which[i]] = packet.tfar[i] < 0.0f;  // -inf on a hit
 }
 

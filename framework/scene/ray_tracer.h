@@ -2,8 +2,7 @@
 // arrays (shared, not copied). Every query counts itself in the caller's RayCounters.
 #pragma once
 
-#include <embree3/rtcore.h>
-
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -20,11 +19,6 @@ struct LoggedRay {
   bool occlusionOnly;        // occluded() rather than intersect()
   bool startsPacket = true;  // the first ray of a packet query, or a single-ray query
 };
-
-// Scenes with at least this many triangles get Embree's compact BVH (less memory, slower rays).
-constexpr size_t kCompactBvhFromTriangles = 100000;
-// The Embree scene flags RayTracer builds with for a scene of `triangles` triangles.
-RTCSceneFlags bvhFlags(size_t triangles);
 
 class RayTracer {
  public:
@@ -64,9 +58,12 @@ class RayTracer {
                         const Vec3& frontNormal) const;
   void logQueries(const Ray rays[], const uint32_t which[], int count, bool occlusionOnly) const;
 
+  // Embree's scene, kept out of this header so that what includes it (every stage file) does
+  // not depend on which Embree the build uses (scene/embree.h).
+  struct Bvh;
+
   const Scene& scene_;
-  RTCDevice device_ = nullptr;
-  RTCScene rtcScene_ = nullptr;
+  std::unique_ptr<Bvh> bvh_;
   size_t bvhBytes_ = 0;
   uint64_t sceneHash_ = 0;
   std::vector<LoggedRay>* log_ = nullptr;

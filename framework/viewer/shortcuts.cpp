@@ -34,7 +34,8 @@ const Shortcut kShortcuts[] = {
 };
 
 bool pressed(int key) {
-  return ImGui::IsKeyPressed(key, false);
+  // A GLFW key code: ImGui 1.86 indexes keys by it, 1.90 still maps it (its legacy key indices).
+  return ImGui::IsKeyPressed(static_cast<ImGuiKey>(key), false);
 }
 
 }  // namespace
