@@ -106,8 +106,11 @@ TEST(CaseRenderJob, AnythingElseIsRefusedNamingWhat) {
   EXPECT_EQ(refusal(edited(1, 1, {"--together"})), command + ": --together is given twice");
   // What every job has.
   EXPECT_EQ(refusal(edited(1, 3, {})), command + ": no --output given");
+  EXPECT_EQ(
+      refusal({command, "--output", "o", "--scenes", "s", "--seed", "1", "--sandbox", "auto"}),
+      command + ": no --case given");
   EXPECT_EQ(refusal({command, "--output", "o", "--scenes", "s", "--seed", "1"}),
-            command + ": no --case given");
+            command + ": no --sandbox given");
   EXPECT_EQ(refusal(edited(0, 1, {"grade"})),
             command + ": the command line does not start with " + command);
 }
@@ -134,6 +137,7 @@ TEST(CaseRenderJob, TheProgramHandsItsCommandLineToTheJob) {
   job.output = folder.string();
   job.scenes = PATHWAY_SCENES_DIR;
   job.gradeReference = true;
+  shareWithSandboxUser(folder.string(), job.sandbox);  // its child runs as nobody under root
   std::string command = PATHWAY_BINARY;
   for (const std::string& argument : job.toArguments()) command += " '" + argument + "'";
   const test::CommandOutcome rendered = test::runCommand(command);

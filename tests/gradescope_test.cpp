@@ -63,6 +63,14 @@ TEST(Gradescope, TheAutograderZipSetsUpAndGradesSubmissions) {
 
   const std::string correct = submit("true");
   EXPECT_NE(correct.find("\"score\": 100.00"), std::string::npos) << correct;
+  // The student's code was shut in, and the results say how.
+  EXPECT_NE(correct.find("\"sandbox\": \"compiler: sandbox require: files: Landlock"),
+            std::string::npos)
+      << correct;
+  EXPECT_NE(correct.find("renders: sandbox require: files: Landlock"), std::string::npos);
+  if (::geteuid() == 0) {
+    EXPECT_NE(correct.find("(nobody), not root"), std::string::npos);
+  }
   EXPECT_EQ(correct.find("\"status\": \"failed\""), std::string::npos) << correct;
   EXPECT_TRUE(fs::exists(root / "results/report/index.html"));
 

@@ -10,6 +10,7 @@
 #include <map>
 #include <string>
 
+#include "grade/grading_cases.h"
 #include "grade_results.h"
 #include "run_command.h"
 #include "stage_under_test.h"
@@ -21,14 +22,22 @@ namespace fs = std::filesystem;
 
 const std::string kSource = PATHWAY_SOURCE_DIR;
 
-// The autograder's verdicts on `submission` (a folder of stage files), graded in this repository.
+// The autograder's verdicts on `submission` (a folder of stage files), graded in this repository,
+// on the cases a handout has: the course's own cases (which it grades too) are counted apart.
 std::map<std::string, std::string> autograderVerdicts(const fs::path& submission,
                                                       const fs::path& output) {
   const test::CommandOutcome graded =
       test::runCommand(std::string(PATHWAY_BINARY) + " grade -q --submission " +
                        submission.string() + " --output " + output.string());
   EXPECT_NE(graded.exitCode, -1) << graded.output;
-  return test::caseStatuses(test::readTextFile((output / "results.json").string()));
+  std::map<std::string, std::string> verdicts =
+      test::caseStatuses(test::readTextFile((output / "results.json").string()));
+  size_t courseCases = 0;
+  for (const GradingCase& c : gradingCases())
+    if (c.courseOnly)
+      courseCases += verdicts.erase("Stage " + std::to_string(c.stage) + " · " + c.name);
+  EXPECT_GE(courseCases, 5u) << "the autograder grades the course's own cases too";
+  return verdicts;
 }
 
 class Handout : public ::testing::Test {
@@ -82,6 +91,15 @@ TEST_F(Handout, ShipsTheReferenceCompiledBuildsPassesItsSuiteAndGradesAsTheAutog
   const std::map<std::string, std::string> selfGrade =
       test::caseStatuses(test::readTextFile((handout / "grade-report/results.json").string()));
   EXPECT_GE(selfGrade.size(), 15u);
+  // The handout has neither the course's cases nor their references, and says how many there are.
+  EXPECT_FALSE(fs::exists(handout / "framework/grade/course_cases.cpp"));
+  EXPECT_FALSE(fs::exists(handout / "scenes/references/course"));
+  size_t courseCases = 0;
+  for (const GradingCase& c : gradingCases()) courseCases += c.courseOnly;
+  EXPECT_NE(test::readTextFile((handout / "grade-report/results.json").string())
+                .find("The course's autograder also grades " + std::to_string(courseCases) +
+                      " cases of its own"),
+            std::string::npos);
   EXPECT_EQ(selfGrade, autograderVerdicts(kSource + "/assignments", dir_ / "skeletons"));
 
   // A submission compiled into the handout: finished stages, with a missing cos θ in stage 2.

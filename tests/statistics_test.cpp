@@ -214,6 +214,25 @@ TEST(Statistics, ChiSquaredUpperTailMatchesReference) {
   EXPECT_THROW(chiSquaredUpperTail(1, kNaN), PathwayError);
 }
 
+TEST(Statistics, ChiSquaredLowerTailMatchesMpmathFarIntoTheTail) {
+  struct Case {
+    double x, k, p;  // P(a = k/2, x/2), mpmath gammainc(regularized=True) at 30 digits
+  };
+  const Case cases[] = {
+      {0.5, 10, 6.611710561034247e-6},  {0.001, 4, 1.2495834114479178e-7},
+      {100, 300, 3.53061222541479e-30}, {250, 300, 0.016197049792355001},
+      {3, 1, 0.9167354833364496},       {0.2, 150, 3.6519988687261856e-185},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(testing::Message() << "k " << c.k << " x " << c.x);
+    // 1e-11: the prefactor x^a e^-x / Γ(a + 1) carries lgamma's rounding at a = 75.
+    EXPECT_TRUE(relativelyNear(chiSquaredLowerTail(c.x, c.k), c.p, 1e-11));
+  }
+  EXPECT_EQ(chiSquaredLowerTail(0, 10), 0);
+  EXPECT_EQ(chiSquaredLowerTail(kInf, 10), 1);
+  EXPECT_THROW(chiSquaredLowerTail(1, 0), PathwayError);
+}
+
 TEST(Statistics, IncompleteBetaBasics) {
   // I_0.3(2, 3) = 0.3483 exactly (a polynomial in x); I_1e-5(1/2, 1/2) = (2/pi) asin(sqrt(1e-5)).
   EXPECT_TRUE(relativelyNear(regularizedIncompleteBeta(0.3, 2, 3), 0.3483, 1e-14));

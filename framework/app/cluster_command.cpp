@@ -213,7 +213,13 @@ int runClusterRender(const ClusterRenderOptions& options) {
   return 0;
 }
 
-int runClusterGrade(const ClusterGradeOptions& options) {
+int runClusterGrade(const ClusterGradeOptions& given) {
+  // A class graded on shared machines runs its students' code shut in, or not at all, unless the
+  // grade options say otherwise (core/sandbox.h).
+  ClusterGradeOptions options = given;
+  if (std::find(options.gradeArguments.begin(), options.gradeArguments.end(), "--sandbox") ==
+      options.gradeArguments.end())
+    options.gradeArguments.insert(options.gradeArguments.end(), {"--sandbox", "require"});
   const std::vector<std::string> folders = submissionFolders(options.submissions);
   const size_t tasks = std::min<size_t>(options.job.tasks, folders.size());
   const fs::path output = fs::absolute(options.output).lexically_normal();

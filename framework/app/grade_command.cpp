@@ -134,6 +134,14 @@ Command addGradeCommand(CLI::App& app) {
       ->add_option("--calibrate-spp", options->calibrationSpp,
                    "With --calibrate: these spp instead of each case's (references made first)")
       ->check(CLI::Range(1u, 1u << 16));
+  grade
+      ->add_option_function<std::string>(
+          "--sandbox",
+          [options](const std::string& name) { options->sandbox = parseSandboxMode(name); },
+          "How student code is shut in while it compiles and renders: require (refuse to grade "
+          "where the kernel cannot), auto (what the kernel allows) or off (debugging)")
+      ->check(CLI::IsMember({"require", "auto", "off"}))
+      ->default_str(sandboxModeName(SandboxMode::Auto));
   grade->add_flag("-q,--quiet", options->quiet, "No progress or summary");
   return {grade, [options] { return run(*options); }};
 }

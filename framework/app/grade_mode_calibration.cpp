@@ -14,8 +14,8 @@ int calibrateMode(const GradeOptions& options) {
   for (const std::string& library : options.stageLibraries) loadStageLibrary(library);
   const Variant variant = options.gradeReference ? Variant::Reference : Variant::Student;
   const ComparisonSettings settings;
-  std::printf("%-32s %5s %6s %9s %9s %9s %11s %8s\n", "case", "spp", "seeds", "failures", "rate",
-              "verdicts", "closest p", "seconds");
+  std::printf("%-32s %5s %6s %9s %9s %9s %11s %10s %11s %8s\n", "case", "spp", "seeds", "failures",
+              "rate", "verdicts", "closest p", "closeness", "its p", "seconds");
   for (const GradingCase* c : selectedCases(options)) {
     std::vector<uint32_t> spps = options.calibrationSpp;
     if (spps.empty()) spps.push_back(c->spp);
@@ -26,9 +26,10 @@ int calibrateMode(const GradeOptions& options) {
       std::string seeds;  // the first few, to look at again with --seed
       for (size_t i = 0; i < r.failedSeeds.size() && i < 5; ++i)
         seeds += (i ? "," : "  seeds ") + std::to_string(r.failedSeeds[i]);
-      std::printf("%-32s %5u %6d %9d %9.4f %9d %11.3g %8.1f%s\n", r.caseId.c_str(), r.spp, r.seeds,
-                  r.failures, double(r.failures) / r.seeds, r.confirmedFailures, r.largestWorstP,
-                  r.seconds, seeds.c_str());
+      std::printf("%-32s %5u %6d %9d %9.4f %9d %11.3g %10.3g %11.3g %8.1f%s\n", r.caseId.c_str(),
+                  r.spp, r.seeds, r.failures, double(r.failures) / r.seeds, r.confirmedFailures,
+                  r.largestWorstP, r.smallestCloseness, r.smallestClosenessP, r.seconds,
+                  seeds.c_str());
       std::fflush(stdout);
     }
   }

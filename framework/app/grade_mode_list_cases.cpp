@@ -14,9 +14,9 @@ int listCasesMode(const GradeOptions&) {
     std::string params;
     for (const auto& [name, value] : c.params) params += name + "=" + value + " ";
     const std::string size = std::to_string(c.width) + "x" + std::to_string(c.height);
-    std::printf("%-30s %-26s %-9s %4u %4d %7s  %s%s%s\n", c.id().c_str(), c.scene.c_str(),
+    std::printf("%-30s %-26s %-9s %4u %4d %7s  %s%s%s%s\n", c.id().c_str(), c.scene.c_str(),
                 filterTypeName(c.filter).c_str(), c.spp, c.tileSize, size.c_str(), params.c_str(),
-                c.sobol ? "(sobol) " : "", c.purpose.c_str());
+                c.sobol ? "(sobol) " : "", c.courseOnly ? "(course only) " : "", c.purpose.c_str());
   }
   return 0;
 }

@@ -30,6 +30,7 @@ int makeReferencesMode(const GradeOptions& options) {
                          kReferenceReplicates);
         });
     const std::string path = options.references + "/" + c->referenceFile();
+    std::filesystem::create_directories(std::filesystem::path(path).parent_path());
     writeGradingReference(path, reference);
     if (!options.quiet)
       std::fprintf(stderr, "%s%-36s %5.1f s -> %s\n", terminal ? "\r" : "", c->id().c_str(),

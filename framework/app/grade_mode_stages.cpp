@@ -18,6 +18,8 @@ int gradeStagesMode(const GradeOptions& options) {
     summary.notes.push_back("There are no reference stages here (" + referenceStagesProblem() +
                             "), so your stages are graded together: a bug in an earlier stage "
                             "also fails the stages after it.");
+  const std::string notHere = courseCasesNotHere(options.references);
+  if (!notHere.empty()) summary.notes.push_back(notHere);
   return writeGradeSummary(summary, options, settings);
 }
 

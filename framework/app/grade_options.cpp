@@ -30,6 +30,7 @@ GradingRun gradingRun(const GradeOptions& options) {
   run.timeLimit = options.timeLimit;
   run.seed = options.seed;
   run.progress = !options.quiet;
+  run.sandbox = options.sandbox;
   return run;
 }
 

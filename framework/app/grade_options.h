@@ -36,6 +36,8 @@ struct GradeOptions {
   int calibrate = 0;                     // > 0: grade this many seeds per case, in this process
   std::vector<uint32_t> calibrationSpp;  // empty: each case's own
   bool quiet = false;
+  // How student code is shut in while it compiles and renders (core/sandbox.h).
+  SandboxMode sandbox = SandboxMode::Auto;
 
   ReferenceTracing referenceTracing() const {
     return singleRay ? ReferenceTracing::SingleRay : ReferenceTracing::Fastest;

@@ -7,6 +7,7 @@
 
 #include "app/commands.h"
 #include "core/error.h"
+#include "core/sandboxed_command.h"
 #include "grade/case_render_job.h"
 #include "render/reference_library.h"
 
@@ -16,7 +17,8 @@ int main(int argc, char** argv) {
   std::vector<pathway::Command> commands = {
       pathway::addRenderCommand(app), pathway::addGradeCommand(app), pathway::addChartCommand(app),
       pathway::addMergeCommand(app), pathway::addClusterCommand(app)};
-  commands.push_back(pathway::addCaseRenderCommand(app));  // hidden: the grader's child
+  commands.push_back(pathway::addCaseRenderCommand(app));    // hidden: the grader's child
+  commands.push_back(pathway::addSandboxedRunCommand(app));  // hidden: its sandboxed compiler
   const pathway::Command reference = pathway::addReferenceCommand(app);
   commands.push_back(reference);
 #ifdef PATHWAY_HAS_VIEWER
@@ -31,8 +33,10 @@ int main(int argc, char** argv) {
       pathway::passedOnArguments().assign(argv + i + 1, argv + argc);
       break;
     }
-  // The grader's child reads its command line itself (grade/case_render_job.h).
-  if (argc > 1 && std::string(argv[1]) == pathway::CaseRenderJob::kCommand) {
+  // The grader's child and the sandbox's launcher read their command lines themselves
+  // (grade/case_render_job.h, core/sandboxed_command.h).
+  if (argc > 1 && (std::string(argv[1]) == pathway::CaseRenderJob::kCommand ||
+                   std::string(argv[1]) == pathway::SandboxedCommand::kCommand)) {
     parsed = 2;
     pathway::unparsedArguments().assign(argv + 1, argv + argc);
   }

@@ -14,6 +14,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -34,6 +36,55 @@ std::string lastBytes(const std::string& path, size_t limit) {
   std::string text(static_cast<size_t>(size - start), '\0');
   in.read(text.data(), static_cast<std::streamsize>(text.size()));
   return start > 0 ? "..." + text : text;
+}
+
+// The children runChild is waiting for, in any thread: never taken for strays.
+std::mutex liveChildrenMutex;
+std::set<pid_t> liveChildren;
+
+// The parent and process group of `pid`, from /proc/PID/stat (after the command's parentheses).
+bool parentAndGroup(pid_t pid, pid_t& parent, pid_t& group) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  std::string stat;
+  if (!std::getline(in, stat)) return false;
+  const size_t close = stat.rfind(')');
+  if (close == std::string::npos) return false;
+  std::istringstream fields(stat.substr(close + 1));
+  char state = 0;
+  return static_cast<bool>(fields >> state >> parent >> group);
+}
+
+// Ends the processes a child left behind: its process group, and the orphans that were handed to
+// this process as their subreaper (they left the group with setsid, so their group is not ours).
+// Children of this process that share its group (started by others, e.g. popen) are left alone.
+int endLeftBehind(pid_t child) {
+  // The group first; its members, once dead, are handed over too and reaped below.
+  if (::kill(-child, SIGKILL) == 0) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  int ended = 0;
+  const pid_t self = ::getpid(), ownGroup = ::getpgrp();
+  for (int round = 0; round < 100; ++round) {  // killing one may hand over its own children
+    std::vector<pid_t> strays;
+    {
+      const std::lock_guard<std::mutex> lock(liveChildrenMutex);
+      std::error_code error;
+      for (const auto& entry : std::filesystem::directory_iterator("/proc", error)) {
+        const std::string name = entry.path().filename().string();
+        if (name.empty() || name.find_first_not_of("0123456789") != std::string::npos) continue;
+        const pid_t pid = std::stoi(name);
+        pid_t parent = 0, group = 0;
+        if (parentAndGroup(pid, parent, group) && parent == self && group != ownGroup &&
+            !liveChildren.count(pid))
+          strays.push_back(pid);
+      }
+    }
+    if (strays.empty()) break;
+    for (pid_t pid : strays) {
+      ::kill(pid, SIGKILL);
+      ::waitpid(pid, nullptr, 0);
+      ++ended;
+    }
+  }
+  return ended;
 }
 
 }  // namespace
@@ -65,13 +116,18 @@ ChildOutcome runChild(const std::vector<std::string>& arguments, double timeLimi
   // Its own process group, so a timeout stops the child and anything it started.
   posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
   posix_spawnattr_setpgroup(&attributes, 0);
+  // Orphans of what the child starts come to this process, not to init, so they can be ended.
+  ::prctl(PR_SET_CHILD_SUBREAPER, 1);
 
   std::vector<char*> argv;
   for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
   argv.push_back(nullptr);
   const auto start = std::chrono::steady_clock::now();
   pid_t pid = 0;
+  std::unique_lock<std::mutex> registering(liveChildrenMutex);
   const int error = posix_spawnp(&pid, argv[0], &actions, &attributes, argv.data(), environ);
+  if (error == 0) liveChildren.insert(pid);
+  registering.unlock();
   posix_spawn_file_actions_destroy(&actions);
   posix_spawnattr_destroy(&attributes);
   ::close(output);
@@ -100,6 +156,12 @@ ChildOutcome runChild(const std::vector<std::string>& arguments, double timeLimi
     std::this_thread::sleep_for(wait);
   }
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  {
+    const std::lock_guard<std::mutex> lock(liveChildrenMutex);
+    liveChildren.erase(pid);
+  }
+  // A process group's number stays taken while a member lives, so -pid is still the child's.
+  outcome.leftBehind = endLeftBehind(pid);
   if (!outcome.timedOut) {
     if (WIFEXITED(status)) outcome.exitCode = WEXITSTATUS(status);
     if (WIFSIGNALED(status)) outcome.signal = WTERMSIG(status);

@@ -16,6 +16,9 @@ struct ChildOutcome {
   int signal = 0;     // when a signal ended it (0: none)
   double seconds = 0.0;
   std::string output;  // stdout and stderr, interleaved, at most the last 64 KiB
+  // Processes the child started that were still alive when it ended (it left them in its process
+  // group, or in a session of their own with setsid): all of them were ended.
+  int leftBehind = 0;
 
   bool succeeded() const { return started && !timedOut && signal == 0 && exitCode == 0; }
   // "exited with status 2", "crashed (signal 11, Segmentation fault)", "ran past its time
@@ -24,7 +27,9 @@ struct ChildOutcome {
 };
 
 // Runs `arguments` (arguments[0] is the program, found on PATH when it has no '/'), killing it
-// (and its children) after `timeLimit` seconds. `outputFile` receives its output.
+// (and its children) after `timeLimit` seconds. `outputFile` receives its output. When it ends,
+// every process it started is ended too: those still in its process group, and those that left
+// it (this process is their subreaper, so they become its children when their parents end).
 ChildOutcome runChild(const std::vector<std::string>& arguments, double timeLimit,
                       const std::string& outputFile);
 

@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <map>
 #include <set>
+#include <thread>
 
 #include "core/child_process.h"
 #include "core/error.h"
@@ -27,6 +30,15 @@ constexpr const char* kTogetherFlag = "--together";               // a toggle (p
 constexpr const char* kGradeReferenceFlag = "--grade-reference";  // a toggle (present or not)
 constexpr const char* kSingleRayFlag = "--single-ray";            // a toggle (present or not)
 constexpr const char* kStagesLibraryFlag = "--stages-library";    // per library, in order
+constexpr const char* kSandboxFlag = "--sandbox";                 // once
+
+// The child's limits: a render and its log need far less than 64 MiB of file, and the largest
+// grading case far less than 4 GiB of address space (thread stacks and malloc's arenas
+// included); a grace on top of the cases' time limits.
+constexpr uint64_t kChildFileBytes = 64ull << 20;
+constexpr uint64_t kChildAddressSpaceBytes = 4ull << 30;
+constexpr uint64_t kChildOpenFiles = 256;
+constexpr double kChildCpuGraceSeconds = 10.0;
 
 // The shortest text that reads back as the same double (15 -> "15", 17.25 -> "17.25").
 std::string exactText(double value) {
@@ -60,6 +72,7 @@ std::vector<std::string> CaseRenderJob::toArguments() const {
   if (singleRay) arguments.push_back(kSingleRayFlag);
   for (const std::string& library : stageLibraries)
     arguments.insert(arguments.end(), {kStagesLibraryFlag, library});
+  arguments.insert(arguments.end(), {kSandboxFlag, sandboxModeName(sandbox)});
   return arguments;
 }
 
@@ -114,11 +127,18 @@ CaseRenderJob CaseRenderJob::fromArguments(const std::vector<std::string>& argum
       job.singleRay = true;
     } else if (flag == kStagesLibraryFlag) {
       job.stageLibraries.push_back(value());
+    } else if (flag == kSandboxFlag) {
+      once();
+      try {
+        job.sandbox = parseSandboxMode(value());
+      } catch (const PathwayError& error) {
+        throw refusal(flag + ": " + error.what());
+      }
     } else {
       throw refusal("unknown argument '" + flag + "'");
     }
   }
-  for (const char* required : {kOutputFlag, kScenesFlag, kSeedFlag})
+  for (const char* required : {kOutputFlag, kScenesFlag, kSeedFlag, kSandboxFlag})
     if (!given.count(required)) throw refusal(std::string("no ") + required + " given");
   if (job.cases.empty()) throw refusal(std::string("no ") + kCaseFlag + " given");
   for (const Case& c : job.cases)
@@ -139,12 +159,37 @@ bool operator==(const CaseRenderJob::Case& a, const CaseRenderJob::Case& b) {
 bool operator==(const CaseRenderJob& a, const CaseRenderJob& b) {
   return a.cases == b.cases && a.output == b.output && a.scenes == b.scenes && a.seed == b.seed &&
          a.together == b.together && a.gradeReference == b.gradeReference &&
-         a.singleRay == b.singleRay && a.stageLibraries == b.stageLibraries;
+         a.singleRay == b.singleRay && a.stageLibraries == b.stageLibraries &&
+         a.sandbox == b.sandbox;
+}
+
+SandboxPolicy CaseRenderJob::sandboxPolicy() const {
+  SandboxPolicy policy;
+  policy.readable = stageLibraries;
+  policy.writable = {output};
+  double seconds = kChildCpuGraceSeconds;
+  for (const Case& c : cases) seconds += c.timeLimit;
+  policy.cpuSeconds =
+      static_cast<uint64_t>(std::ceil(seconds * std::max(1u, std::thread::hardware_concurrency())));
+  policy.addressSpaceBytes = kChildAddressSpaceBytes;
+  policy.openFiles = kChildOpenFiles;
+  policy.fileBytes = kChildFileBytes;
+  return policy;
 }
 
 void runCaseRenderJob(const CaseRenderJob& job) {
-  limitThisChild(64ull << 20);  // a render and its log need far less than 64 MiB
+  limitThisChild(kChildFileBytes);
   reportPixelsOnFatalSignals();
+  // Everything the cases read from files, read while this process is still the grader's own.
+  std::map<std::string, Scene> scenes;
+  for (const CaseRenderJob::Case& c : job.cases)
+    if (!scenes.count(c.gradingCase->scene))
+      scenes.emplace(c.gradingCase->scene, loadScene(job.scenes + "/" + c.gradingCase->scene));
+  // Shut in before the first line of student code runs: loading a library runs its static
+  // initializers. No thread has started yet (the renderer's start with the first case).
+  const SandboxState sandbox = enterSandbox(job.sandboxPolicy(), job.sandbox);
+  std::printf("pathway: %s\n", sandbox.summary().c_str());
+  std::fflush(stdout);
   std::vector<int> registeredStages;
   for (const std::string& library : job.stageLibraries)
     for (int stage : loadStageLibrary(library)) registeredStages.push_back(stage);
@@ -161,8 +206,7 @@ void runCaseRenderJob(const CaseRenderJob& job) {
         gradingCase.recipe(job.gradeReference ? Variant::Reference : Variant::Student,
                            job.together ? EarlierStages::Own : EarlierStages::Reference, job.seed,
                            job.singleRay ? ReferenceTracing::SingleRay : ReferenceTracing::Fastest);
-    const Scene scene = loadScene(job.scenes + "/" + gradingCase.scene);
-    const RayTracer tracer(scene);
+    const RayTracer tracer(scenes.at(gradingCase.scene));
     const RenderResult result = runRender(tracer, recipe);
     writeExr(job.imagePath(gradingCase), result.images, result.metadata);
   }

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/sandbox.h"
 #include "grade/grading_cases.h"
 
 namespace pathway {
@@ -33,6 +34,12 @@ struct CaseRenderJob {
   // Stage libraries (render/stage_library.h) loaded before rendering, in this order. The parent
   // gives absolute paths: the child may resolve a relative one differently.
   std::vector<std::string> stageLibraries;
+  // How the child shuts itself in before it loads them (core/sandbox.h).
+  SandboxMode sandbox = SandboxMode::Auto;
+
+  // What the child may touch once it is shut in: read its libraries, write in `output`; within
+  // limits on memory, CPU time (the cases' limits on every core), open files and file size.
+  SandboxPolicy sandboxPolicy() const;
 
   // The child's command line after the program's path: kCommand, then the job.
   std::vector<std::string> toArguments() const;
@@ -49,11 +56,12 @@ struct CaseRenderJob {
 bool operator==(const CaseRenderJob::Case& a, const CaseRenderJob::Case& b);
 bool operator==(const CaseRenderJob& a, const CaseRenderJob& b);
 
-// The child's part: renders the job's cases in order, each into job.imagePath(case) and each
-// within its own time limit (past it, SIGALRM ends the process: the parent then knows which case
-// hung from the images that exist). Limits what the process may write and reports the pixels in
-// progress when a signal ends it (render/pixel_in_progress.h). Throws PathwayError when a stage
-// a case needs is in none of the job's libraries.
+// The child's part: reads the cases' scenes, shuts itself in (job.sandboxPolicy(), job.sandbox)
+// and says so on its first line of output, loads the stage libraries, and renders the job's cases
+// in order, each into job.imagePath(case) and each within its own time limit (past it, SIGALRM
+// ends the process: the parent then knows which case hung from the images that exist). Reports
+// the pixels in progress when a signal ends it (render/pixel_in_progress.h). Throws PathwayError
+// when a stage a case needs is in none of the job's libraries.
 void runCaseRenderJob(const CaseRenderJob& job);
 
 }  // namespace pathway

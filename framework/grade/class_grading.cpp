@@ -129,7 +129,7 @@ SubmissionResult gradeSubmission(const std::string& folder, const std::string& o
 
     // Each stage file builds on its own: one that does not compile costs its own stage only.
     const SubmissionBuild build =
-        buildSubmission(submission, (out / "build").string(), buildTimeLimit);
+        buildSubmission(submission, (out / "build").string(), buildTimeLimit, gradingRun.sandbox);
     row.buildSeconds = build.seconds;
     GradingRun run = gradingRun;
     run.cases.clear();
@@ -152,6 +152,8 @@ SubmissionResult gradeSubmission(const std::string& folder, const std::string& o
       summary.title += " (" + row.name + ")";
     }
     summary.notes = notes;
+    summary.sandbox =
+        build.sandbox + (summary.sandbox.empty() ? "" : "\nrenders: " + summary.sandbox);
     row.gradeSeconds = summary.seconds;
     std::set<int> crashed, timedOut, uncompiled;
     for (const CaseResult& c : summary.cases) {

@@ -38,7 +38,13 @@ CalibrationResult calibrate(const GradingCase& gradingCase, uint32_t spp, Varian
   };
   for (int i = 0; i < seeds; ++i) {
     Comparison comparison, confirmation;
-    if (!passes(firstSeed + i, &comparison)) {
+    const bool passed = passes(firstSeed + i, &comparison);
+    if (comparison.closeness >= 0 &&
+        (result.smallestCloseness < 0 || comparison.closeness < result.smallestCloseness)) {
+      result.smallestCloseness = comparison.closeness;
+      result.smallestClosenessP = comparison.closenessP;
+    }
+    if (!passed) {
       // As the grader does: a failure counts when a render with another seed fails too.
       result.confirmedFailures += !passes(firstSeed + i + kConfirmationSeedOffset, &confirmation);
       ++result.failures;

@@ -22,6 +22,10 @@ struct CalibrationResult {
   int failures = 0;           // renders the grader failed
   int confirmedFailures = 0;  // ... whose confirmation render (another seed) failed too: verdicts
   double largestWorstP = 0;   // over the failed renders: how close the closest call came
+  // Over all renders: the one closest to the reference (Comparison::closeness; an exact image
+  // scores about 1), and the chance of an exact image coming that close (the too-close test).
+  double smallestCloseness = -1.0;
+  double smallestClosenessP = 1.0;
   std::vector<uint64_t> failedSeeds;  // to look at a failure again: pathway grade --seed S
   double seconds = 0.0;               // rendering and grading, references excluded
 };

@@ -214,6 +214,7 @@ void writeHtmlReport(const std::string& folder, const GradeSummary& summary,
        << " &middot; " << summary.cases.size() << " cases &middot; graded in "
        << fixed(summary.seconds, 1) << " s</p>\n";
   for (const std::string& note : summary.notes) page << "<p>" << escapeHtml(note) << "</p>\n";
+  if (!summary.sandbox.empty()) page << "<p>" << escapeHtml(summary.sandbox) << "</p>\n";
   page << "<table><tr><th>case</th><th>verdict</th><th>worst tile p</th><th>omnibus p</th>"
        << "<th>likely cause</th><th>your time</th><th>reference time</th></tr>\n";
   for (const CaseResult& c : summary.cases) {
@@ -288,9 +289,11 @@ std::string gradescopeResults(const GradeSummary& summary, const ComparisonSetti
   std::ostringstream out;
   std::string overall = summary.title + "\n";
   for (const std::string& note : summary.notes) overall += note + "\n";
+  if (!summary.sandbox.empty()) overall += summary.sandbox + "\n";
   out << "{\n  \"score\": " << fixed(summary.points(), 2)
       << ",\n  \"execution_time\": " << fixed(summary.seconds, 1)
       << ",\n  \"output\": " << jsonString(overall) << ",\n  \"visibility\": \"visible\",\n"
+      << "  \"extra_data\": {\"sandbox\": " << jsonString(summary.sandbox) << "},\n"
       << "  \"stdout_visibility\": \"hidden\",\n  \"tests\": [";
   for (size_t i = 0; i < summary.cases.size(); ++i) {
     const CaseResult& c = summary.cases[i];

@@ -42,6 +42,7 @@ struct GradeSummary {
   std::string title;  // "Pathway grading: each stage on the reference's earlier stages"
   std::vector<CaseResult> cases;
   std::vector<std::string> notes;  // submission-wide remarks (missing files, build output, ...)
+  std::string sandbox;  // how student code was shut in while it ran (SandboxState::summary)
   double seconds = 0.0;
 
   double points() const;

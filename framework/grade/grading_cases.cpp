@@ -1,49 +1,16 @@
 #include "grade/grading_cases.h"
 
+#include <algorithm>
+#include <fstream>
+#include <map>
+
 #include "core/error.h"
+#include "grade/grading_case_builder.h"
 #include "render/recipe_builder.h"
 #include "render/reference_library.h"
 
 namespace pathway {
 namespace {
-
-// A case at the defaults (96x96, box filter, the stage's own sampler), changed one setting at a
-// time so the table below reads as a list of what each case does differently.
-struct CaseBuilder {
-  GradingCase c;
-  CaseBuilder(int stage, std::string name, std::string scene, std::string purpose) {
-    c.stage = stage;
-    c.name = std::move(name);
-    c.scene = std::move(scene);
-    c.purpose = std::move(purpose);
-  }
-  CaseBuilder& param(const std::string& name, const std::string& value) {
-    c.params[name] = value;
-    return *this;
-  }
-  CaseBuilder& filter(FilterType type, float radius = 0.0f) {
-    c.filter = type;
-    c.filterRadius = radius;
-    return *this;
-  }
-  CaseBuilder& sobol() {
-    c.sobol = true;
-    return *this;
-  }
-  CaseBuilder& size(int width, int height) {
-    c.width = width;
-    c.height = height;
-    return *this;
-  }
-  CaseBuilder& spp(uint32_t samples) {
-    c.spp = samples;
-    return *this;
-  }
-  CaseBuilder& tiles(int size) {
-    c.tileSize = size;
-    return *this;
-  }
-};
 
 std::vector<GradingCase> declareCases() {
   using B = CaseBuilder;
@@ -168,9 +135,49 @@ RenderRecipe GradingCase::recipe(Variant variant, EarlierStages earlier, uint64_
       .filter(filter, filterRadius);
 }
 
-const std::vector<GradingCase>& gradingCases() {
-  static const std::vector<GradingCase> cases = declareCases();
+namespace {
+
+std::vector<GradingCase>& courseCases() {
+  static std::vector<GradingCase> cases;
   return cases;
+}
+
+}  // namespace
+
+bool addCourseCases(std::vector<GradingCase> cases) {
+  for (GradingCase& c : cases) {
+    c.courseOnly = true;
+    courseCases().push_back(std::move(c));
+  }
+  return true;
+}
+
+const std::vector<GradingCase>& gradingCases() {
+  static const std::vector<GradingCase> cases = [] {
+    std::vector<GradingCase> all = declareCases();
+    all.insert(all.end(), courseCases().begin(), courseCases().end());
+    // Each stage's cases together, the shipped ones first: the grader renders a stage at a time.
+    std::stable_sort(all.begin(), all.end(),
+                     [](const GradingCase& a, const GradingCase& b) { return a.stage < b.stage; });
+    return all;
+  }();
+  return cases;
+}
+
+std::string courseCasesNotHere(const std::string& referencesFolder) {
+  std::ifstream in(referencesFolder + "/course-cases.txt");
+  std::map<int, int> perStage;
+  int total = 0;
+  for (int stage; in >> stage;) ++perStage[stage], ++total;
+  if (total == 0) return "";
+  for (const GradingCase& c : gradingCases())
+    if (c.courseOnly) return "";  // built in: graded here
+  std::string text = "The course's autograder also grades " + std::to_string(total) +
+                     " cases of its own that this handout does not have (";
+  for (const auto& [stage, count] : perStage)
+    text += (text.back() == '(' ? "" : ", ") + std::string("stage ") + std::to_string(stage) +
+            ": " + std::to_string(count);
+  return text + "): other scenes, sizes and settings, so write the stages, not the images.";
 }
 
 std::vector<const GradingCase*> gradingCasesOf(int stage) {

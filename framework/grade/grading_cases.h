@@ -1,7 +1,10 @@
 // The course's grading cases: for each stage, a few scenes and settings picked so that the
 // stage's typical bugs change the image somewhere, with the sample count a submission renders at.
 // The references are made from solutions/ at kReferenceReplicates times that sample count
-// (`pathway grade --make-references`) and shipped with the handout.
+// (`pathway grade --make-references`) and shipped with the handout. Beside them, the course keeps
+// cases of its own (framework/grade/course_cases.cpp, built in where it exists): the handout has
+// neither their definitions nor their references, so a stage that copies or bakes in the shipped
+// references fails them; the autograder grades them, a handout's self-grade cannot.
 #pragma once
 
 #include <map>
@@ -36,11 +39,15 @@ struct GradingCase {
   // two (a filter's shape barely changes an 8x8 tile's mean), large where samples are rare
   // events that need many per tile.
   int tileSize = 8;
-  std::string purpose;  // one line: what it is there to catch
+  std::string purpose;      // one line: what it is there to catch
+  bool courseOnly = false;  // kept by the course: not in a handout (course_cases.cpp)
 
   std::string id() const { return "stage" + std::to_string(stage) + "-" + name; }
-  // The reference file's name under the references folder.
-  std::string referenceFile() const { return id() + ".exr"; }
+  // The reference file's name under the references folder (course cases: in its course/).
+  std::string referenceFile() const {
+    return (courseOnly ? std::string(kCourseReferenceFolder) + "/" : "") + id() + ".exr";
+  }
+  static constexpr const char* kCourseReferenceFolder = "course";
   // The recipe for this case: the stage in `variant`, earlier stages from `earlier`. The
   // reference stage renders with its wavefront version where it has one, unless `tracing` is
   // SingleRay (render/integrator_registry.h).
@@ -48,7 +55,15 @@ struct GradingCase {
                       ReferenceTracing tracing = ReferenceTracing::Fastest) const;
 };
 
+// Every case: the shipped ones, then the course's own where they are built in.
 const std::vector<GradingCase>& gradingCases();
+// Adds the course's own cases (marked courseOnly); course_cases.cpp calls it while the program
+// starts, before anything asks for the cases.
+bool addCourseCases(std::vector<GradingCase> cases);
+// A line for people about the course's cases this program does not have: read from
+// `referencesFolder`/course-cases.txt, which scripts/make-handout writes into a handout ("" when
+// there is none, or when the cases are built in).
+std::string courseCasesNotHere(const std::string& referencesFolder);
 // The cases of one stage; throws PathwayError for a stage that has none.
 std::vector<const GradingCase*> gradingCasesOf(int stage);
 // Throws PathwayError naming the known ids.

@@ -89,11 +89,33 @@ Unit unitStatistic(const ComparisonInput& input, const ComparisonSettings& setti
   return unit;
 }
 
+// Test 4 (image_comparison.h): how close the image is to the reference, against an exact image.
+void measureCloseness(const ComparisonInput& input, const std::vector<TileBounds>& blockBounds,
+                      bool blocks, Comparison& result) {
+  const Image& oneRender =
+      blocks && input.blockVariance ? *input.blockVariance : *input.tileVariance;
+  double squared = 0.0, noise = 0.0, noiseSquared = 0.0;
+  for (const TileBounds& b : blockBounds) {
+    const glm::dvec3 difference = tileMean(*input.image, b) - tileMean(*input.reference, b);
+    const glm::dvec3 meanVariance = glm::dvec3(oneRender.at(b.x0, b.y0)) / double(input.replicates);
+    for (int c = 0; c < 3; ++c) {
+      squared += difference[c] * difference[c];
+      noise += meanVariance[c];
+      noiseSquared += meanVariance[c] * meanVariance[c];
+    }
+  }
+  if (!(noise > 0.0)) return;  // a reference without noise: nothing to be closer than
+  result.closeness = squared / noise;
+  // An exact image's Σ d² is Σ v_i χ²_1: about χ²_k · noise / k with k = noise² / Σ v_i².
+  const double degrees = noise * noise / noiseSquared;
+  result.closenessP = chiSquaredLowerTail(result.closeness * degrees, degrees);
+}
+
 }  // namespace
 
 bool Comparison::passed(const ComparisonSettings& settings) const {
   return hardFailures.empty() && worstTileP >= settings.tileAlpha &&
-         omnibusP >= settings.omnibusAlpha;
+         omnibusP >= settings.omnibusAlpha && !tooClose(settings);
 }
 
 std::string Comparison::describe(const ComparisonSettings& settings) const {
@@ -112,6 +134,12 @@ std::string Comparison::describe(const ComparisonSettings& settings) const {
   out << "whole image: omnibus " << formatP(omnibusP) << " (fails below "
       << formatNumber(settings.omnibusAlpha) << "); mean differs from the reference by "
       << formatNumber(100.0 * meanRelativeDifference) << "%\n";
+  if (tooClose(settings))
+    out << "too close to be true: the image differs from the reference " << formatNumber(closeness)
+        << " times as much as the reference's own noise alone would make it differ (an image "
+           "with no noise at all: about 1; this close: p = "
+        << formatNumber(closenessP)
+        << "). A render cannot come this close; a copy of the reference does\n";
   return out.str();
 }
 
@@ -202,6 +230,7 @@ Comparison compareImages(const ComparisonInput& input, const ComparisonSettings&
     smallestOmnibus = std::min({smallestOmnibus, result.chiSquaredP[c], result.meanShiftP[c]});
   }
   result.omnibusP = std::min(1.0, 6.0 * smallestOmnibus);
+  if (replicated) measureCloseness(input, blockBounds, blocks, result);
   const double referenceMean = mean(reference);
   result.meanRelativeDifference =
       referenceMean != 0.0 ? (mean(image) - referenceMean) / referenceMean : 0.0;

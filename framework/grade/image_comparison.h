@@ -9,8 +9,14 @@
 //   3. omnibus tests per channel on the same statistics over blocks (8x8 pixels, larger than a
 //      filter's reach, so nearly independent) mapped to N(0, 1): Σ z² ~ χ²(blocks), which catches
 //      differences spread thinly over many blocks, and Σ z / sqrt(blocks) ~ N(0, 1), which
-//      catches a small bias of one sign everywhere. Bonferroni over the six.
-// The image passes when no hard check fails and neither family-wise p is below its α.
+//      catches a small bias of one sign everywhere. Bonferroni over the six;
+//   4. with replicates, the lower tail: Σ (m_image - m_reference)² over the blocks against Σ of
+//      the reference mean's own variance, which is what an image without any noise would show
+//      (the reference is a mean of R renders, not the truth). Far below it, the image copies the
+//      reference: the chance of an exact image coming that close (a weighted χ², Satterthwaite's
+//      degrees of freedom) below tooCloseAlpha fails it. Honest renders, noisy, sit above 1.
+// The image passes when no hard check fails, neither family-wise p is below its α, and it is not
+// too close.
 #pragma once
 
 #include <cstdint>
@@ -38,6 +44,9 @@ struct ComparisonSettings {
   double ownVarianceCap = 1e4;
   // The omnibus tests clamp each block's z to ±this (P(|z| > 5) = 6e-7 for a correct stage).
   double omnibusClamp = 5.0;
+  // An image fails as too close to the reference when even an exact image (no noise at all)
+  // would come that close with less than this probability: only a copy of the reference does.
+  double tooCloseAlpha = 1e-6;
 };
 
 struct ComparisonInput {
@@ -89,7 +98,14 @@ struct Comparison {
   double meanShiftP[3] = {1, 1, 1};     // per channel, Σ z / sqrt(tiles) ~ N(0, 1)
   double omnibusP = 1.0;                // family-wise (Bonferroni over the six)
   double meanRelativeDifference = 0.0;  // (mean image - mean reference) / mean reference
+  // Test 4: Σ d² / Σ Var(reference mean) over the blocks (about 1 for an exact image, more for a
+  // render; < 0: not measured, without replicates or noise), and P(an exact image <= it).
+  double closeness = -1.0;
+  double closenessP = 1.0;
 
+  bool tooClose(const ComparisonSettings& settings) const {
+    return closenessP < settings.tooCloseAlpha;
+  }
   bool passed(const ComparisonSettings& settings) const;
   // A few lines for a person: the hard failures, or the numbers of the statistical tests.
   std::string describe(const ComparisonSettings& settings) const;

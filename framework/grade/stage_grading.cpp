@@ -37,11 +37,12 @@ constexpr int kQuotedOutputLines = 12;
 // "your stage crashed (signal 4, Illegal instruction) in case stage2-ceiling (ceiling.gltf, 64x64,
 // 8 spp) while rendering pixel (12, 40); its last output: ..."
 std::string stopMessage(const ChildOutcome& child, const GradingCase& gradingCase, double limit) {
-  std::string message = "your stage " +
-                        (child.succeeded() ? std::string("stopped without writing its image")
-                                           : child.describe(limit)) +
-                        " in case " + gradingCase.id() + " (" + gradingCase.scene + ", " +
-                        std::to_string(gradingCase.width) + "x" +
+  const bool sandboxed = !child.succeeded() && child.signal == SIGSYS;
+  const std::string how = child.succeeded() ? "stopped without writing its image"
+                          : sandboxed       ? "was stopped by the grader's sandbox"
+                                            : child.describe(limit);
+  std::string message = "your stage " + how + " in case " + gradingCase.id() + " (" +
+                        gradingCase.scene + ", " + std::to_string(gradingCase.width) + "x" +
                         std::to_string(gradingCase.height) + ", " +
                         std::to_string(gradingCase.spp) + " spp)";
   const std::string pixels = pixelsInProgressFrom(child.output);
@@ -49,11 +50,17 @@ std::string stopMessage(const ChildOutcome& child, const GradingCase& gradingCas
     message += (pixels.find("), (") != std::string::npos ? " while rendering pixels "
                                                          : " while rendering pixel ") +
                pixels;
-  // The child's own lines, without the one that named the pixel.
+  if (sandboxed)
+    message +=
+        ": it tried to open a network connection, start a process or reach into another "
+        "process (signal 31, a forbidden system call), which no stage does";
+  // The child's own lines, without the ones that named the pixel and the sandbox.
   std::vector<std::string> lines;
   std::istringstream in(child.output);
   for (std::string line; std::getline(in, line);)
-    if (!line.empty() && line.rfind("pathway: stopped by ", 0) != 0) lines.push_back(line);
+    if (!line.empty() && line.rfind("pathway: stopped by ", 0) != 0 &&
+        line.rfind("pathway: sandbox ", 0) != 0)
+      lines.push_back(line);
   if (lines.empty()) return message + "; it printed nothing before it stopped";
   message += "; its last output:";
   const size_t first = lines.size() > kQuotedOutputLines ? lines.size() - kQuotedOutputLines : 0;
@@ -79,6 +86,7 @@ std::vector<RenderOutcome> renderInChildren(const std::vector<CaseRenderJob::Cas
   job.together = run.together;
   job.gradeReference = run.gradeReference;
   job.singleRay = run.tracing == ReferenceTracing::SingleRay;
+  job.sandbox = run.sandbox;
   for (const std::string& library : run.stageLibraries)
     job.stageLibraries.push_back(fs::absolute(library).string());
   for (size_t next = 0; next < cases.size();) {
@@ -91,6 +99,7 @@ std::vector<RenderOutcome> renderInChildren(const std::vector<CaseRenderJob::Cas
     for (const std::string& argument : job.toArguments()) command.push_back(argument);
     ChildOutcome child = runChild(command, total, log);
     // Images are written whole or not at all (image_io.h): each one there is a finished case.
+    const size_t first = next;
     for (; next < cases.size(); ++next) {
       const std::string image = job.imagePath(*cases[next].gradingCase);
       if (!fs::exists(image)) break;
@@ -100,6 +109,15 @@ std::vector<RenderOutcome> renderInChildren(const std::vector<CaseRenderJob::Cas
         outcomes[next].problem = error.what();
       }
     }
+    // A stage starts no process; one that did (where the sandbox could not refuse it) fails
+    // every case its child rendered, whatever the images.
+    if (child.leftBehind > 0)
+      for (size_t i = first; i < next; ++i) {
+        outcomes[i].image.reset();
+        outcomes[i].problem = "your stage started " + std::to_string(child.leftBehind) +
+                              " process(es) that outlived its render (the grader ended them); "
+                              "a stage starts none";
+      }
     if (next == cases.size()) break;
     // The child stopped on cases[next].
     if (child.signal == SIGALRM) {  // its own alarm: that case's time limit
@@ -184,7 +202,8 @@ void judgeAgainstReference(CaseResult& result, const LoadedImage& render,
   result.image = render.images.color;
   result.reference = reference.mean;
   result.diagnosis.reset();
-  if (!result.passed && result.todos.empty()) {
+  // A copy of the reference has no cause to diagnose: its message says what it is.
+  if (!result.passed && result.todos.empty() && !result.comparison.tooClose(settings)) {
     DiagnosisInput input;
     input.image = &result.image;
     input.reference = &reference.mean;
@@ -216,7 +235,14 @@ GradeSummary gradeStages(const GradingRun& run, const ComparisonSettings& settin
                   (run.gradeReference ? "the reference stages themselves"
                    : run.together     ? "your stages together"
                                       : "each stage on the reference's earlier stages");
+  // What the children will be shut in with, said before any of them runs (and refused here, not
+  // in every child, where --sandbox require cannot be met).
+  CaseRenderJob probe;
+  for (const GradingCase* c : run.cases) probe.cases.push_back({c, run.timeLimit});
+  summary.sandbox = probeSandbox(probe.sandboxPolicy(), run.sandbox).summary();
   const TemporaryFolder work("pathway-grade");  // the renders and their logs; removed at the end
+  // A child of a root grader runs as nobody: the folder it writes its renders in is its own.
+  shareWithSandboxUser(work.path(), run.sandbox);
   std::map<int, int> casesPerStage, done;
   for (const GradingCase* c : run.cases) ++casesPerStage[c->stage];
   // A stage's cases (consecutive in the run) render in one child, unless one crashes or hangs.

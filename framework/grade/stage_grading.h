@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/sandbox.h"
 #include "grade/grade_report.h"
 #include "grade/grading_cases.h"
 #include "grade/grading_reference.h"
@@ -35,13 +36,17 @@ struct GradingRun {
   double timeLimit = 120.0;  // seconds per case
   uint64_t seed = kStudentSeed;
   bool progress = true;  // one line per case on stderr
+  // How the children shut themselves in before they load a stage (core/sandbox.h).
+  SandboxMode sandbox = SandboxMode::Auto;
 };
 
 // The points of case `index` of a stage's `count` cases: kPointsPerStage split into whole
 // hundredths that differ by at most one and add up to it exactly (20/3: 6.67, 6.67, 6.66).
 double casePoints(int index, int count);
 
-// Grades every case of the run; never throws for a case (its problem is in its result).
+// Grades every case of the run; never throws for a case (its problem is in its result). Throws
+// PathwayError before grading anything when run.sandbox is Require and this machine cannot shut
+// student code in.
 GradeSummary gradeStages(const GradingRun& run, const ComparisonSettings& settings);
 
 // Fills in `result` from a render and its reference: verdict, images, timings, TODOs that ran.

@@ -235,6 +235,22 @@ double chiSquaredUpperTail(double x, double k) {
   return regularizedUpperGamma(0.5 * k, 0.5 * x);
 }
 
+double chiSquaredLowerTail(double x, double k) {
+  if (!(k > 0)) throw PathwayError("chiSquaredLowerTail needs k > 0 degrees of freedom");
+  const double a = 0.5 * k, half = 0.5 * x;
+  if (std::isnan(x)) return x;
+  if (half <= 0) return 0;
+  if (half >= a + 1) return 1 - regularizedUpperGamma(a, half);  // P is not small there
+  // The series for P(a, x) itself: no cancellation however small P is.
+  double term = 1 / a, sum = term;
+  for (int n = 1; std::fabs(term) > sum * kEpsilon; ++n) {
+    if (n > kMaxIterations) notConverged("chiSquaredLowerTail");
+    term *= half / (a + n);
+    sum += term;
+  }
+  return std::exp(logGammaFront(a, half)) * sum;
+}
+
 double sidakPerTestAlpha(double familyAlpha, double tests) {
   if (!(familyAlpha >= 0 && familyAlpha <= 1 && tests > 0)) {
     throw PathwayError("sidakPerTestAlpha needs 0 <= alpha <= 1 and tests > 0");

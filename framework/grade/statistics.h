@@ -39,6 +39,9 @@ double studentTToNormal(double t, double nu);
 // P(χ²_k > x) = Q(k/2, x/2), k > 0 degrees of freedom (x <= 0 gives 1). Throws PathwayError unless
 // k > 0.
 double chiSquaredUpperTail(double x, double k);
+// P(χ²_k <= x) = P(k/2, x/2), accurate where it is tiny (an image far closer to the reference than
+// chance allows). Throws PathwayError unless k > 0.
+double chiSquaredLowerTail(double x, double k);
 
 // Šidák correction for m independent tests: the per-test level 1 - (1 - alpha)^(1/m) that keeps
 // the family-wise error at alpha, and the family-wise p-value 1 - (1 - p_min)^m of the smallest

@@ -1,10 +1,12 @@
 #include "grade/submission.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include "core/child_process.h"
 #include "core/error.h"
+#include "core/sandboxed_command.h"
 #include "render/stage_catalog.h"
 #include "render/stage_library.h"
 
@@ -59,24 +61,61 @@ std::string withoutPrefixes(std::string text, const std::vector<std::string>& pr
   return text;
 }
 
+// A compiler's limits: a stage file needs far less than 4 GiB to compile, and its library far
+// less than 64 MiB.
+constexpr uint64_t kCompilerAddressSpaceBytes = 4ull << 30;
+constexpr uint64_t kCompilerFileBytes = 64ull << 20;
+
+// The compile of one stage file, run by this program inside the sandbox: it may read the folders
+// the command includes from (the framework's), the file's own folder, and write `buildFolder`.
+SandboxedCommand sandboxedCompile(const std::vector<std::string>& compile,
+                                  const std::string& buildFolder, double timeLimit,
+                                  SandboxMode mode) {
+  SandboxedCommand sandboxed;
+  sandboxed.mode = mode;
+  sandboxed.policy.startsPrograms = true;
+  for (const std::string& word : compile)
+    if (word.rfind("-I", 0) == 0 && word.size() > 2)
+      sandboxed.policy.readable.push_back(word.substr(2));
+  sandboxed.policy.writable = {buildFolder};
+  sandboxed.policy.addressSpaceBytes = kCompilerAddressSpaceBytes;
+  sandboxed.policy.cpuSeconds = static_cast<uint64_t>(std::ceil(timeLimit)) + 1;
+  sandboxed.policy.fileBytes = kCompilerFileBytes;
+  sandboxed.program = compile;
+  return sandboxed;
+}
+
 }  // namespace
 
 SubmissionBuild buildSubmission(const Submission& submission, const std::string& buildFolder,
-                                double timeLimit) {
+                                double timeLimit, SandboxMode sandbox) {
   SubmissionBuild build;
   fs::create_directories(buildFolder);
+  const std::string folder = fs::absolute(buildFolder).lexically_normal().string();
+  build.sandbox =
+      "compiler: " +
+      probeSandbox(sandboxedCompile({}, folder, timeLimit, sandbox).policy, sandbox).summary();
+  // A compiler of a root grader runs as nobody: the build folder is its own.
+  shareWithSandboxUser(folder, sandbox);
   for (const auto& [stage, file] : submission.files) {
     StageBuild& result = build.stages[stage];
     const std::string name = "stage" + std::to_string(stage);
-    result.library = (fs::absolute(buildFolder) / (name + ".so")).string();
-    std::vector<std::string> command = stageLibraryCompileCommand();
+    result.library = folder + "/" + name + ".so";
+    std::vector<std::string> compile = stageLibraryCompileCommand();
     // A stage file may include a header of its own beside it.
-    command.push_back("-I" + fs::path(file).parent_path().string());
-    command.push_back(file);
-    command.push_back("-o");
-    command.push_back(result.library);
+    compile.push_back("-I" + fs::path(file).parent_path().string());
+    compile.push_back(file);
+    compile.push_back("-o");
+    compile.push_back(result.library);
     std::error_code ignored;
     fs::remove(result.library, ignored);
+    std::vector<std::string> command = compile;
+    if (sandbox != SandboxMode::Off) {
+      command = {currentExecutable()};
+      for (const std::string& word :
+           sandboxedCompile(compile, folder, timeLimit, sandbox).toArguments())
+        command.push_back(word);
+    }
     const ChildOutcome outcome =
         runChild(command, timeLimit, buildFolder + "/" + name + "-build.log");
     build.seconds += outcome.seconds;

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "core/sandbox.h"
+
 namespace pathway {
 
 struct Submission {
@@ -33,11 +35,14 @@ struct StageBuild {
 struct SubmissionBuild {
   std::map<int, StageBuild> stages;  // for every stage file found
   double seconds = 0.0;
+  std::string sandbox;  // how the compiler was shut in (SandboxState::summary)
 };
 
 // Compiles each of the submission's stage files into `buildFolder`/stageN.so, stopping the
-// compiler after `timeLimit` seconds per file.
+// compiler after `timeLimit` seconds per file. The compiler runs in the sandbox (`sandbox`): it
+// reads the system, the framework and the stage file's own folder, and writes the build folder.
+// Throws PathwayError when `sandbox` is Require and this machine cannot shut it in.
 SubmissionBuild buildSubmission(const Submission& submission, const std::string& buildFolder,
-                                double timeLimit);
+                                double timeLimit, SandboxMode sandbox);
 
 }  // namespace pathway

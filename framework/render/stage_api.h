@@ -97,6 +97,8 @@
 //     uint32_t mesh, triangle;
 //     Color power() const;  // emission · π · area, per emitting side
 //   };
+//   // Every emitting triangle of the scene (what EmitterPicker picks from):
+//   std::vector<EmissiveTriangle> collectEmissiveTriangles(const Scene& scene);
 //   struct LightSample {  // what a stage's light sampling returns
 //     Vec3 position;
 //     Vec3 normal;                                // the emitter's front-face normal

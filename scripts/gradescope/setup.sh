@@ -8,9 +8,8 @@ cd "$root/source"
 bash scripts/install-deps --grader
 bash scripts/build grader
 # Student code runs beside these files: the solutions are compiled in, so their sources go, and
-# the rest becomes read-only. The grading runs as an unprivileged user when this runs as root.
+# the rest becomes read-only. The references (the course's own among them) stay readable to the
+# grader alone: student code compiles and renders as the user nobody, inside the sandbox.
 rm -rf solutions tests/mutants
 chmod -R a-w,a+rX "$root/source"
-if [[ $(id -u) == 0 ]] && ! id pathway-grader >/dev/null 2>&1; then
-  useradd --system --no-create-home --shell /usr/sbin/nologin pathway-grader
-fi
+chmod -R go-rwx "$root/source/scenes/references"

@@ -1,0 +1,6 @@
+// Reads another student's submission and copies it out.
+#include "hostile_kit.h"
+namespace {
+const bool attacked =
+    (hostile::steal(hostile::setting("PATHWAY_HOSTILE_SECRET"), "submission"), true);
+}
