@@ -58,4 +58,4 @@ off, auto, n = $m_off, $m_auto, $cases * (10 if '$what' == 'class' else 1)
 print(f'   auto / off = {auto / off:.3f}; {1000 * (auto - off) / n:+.1f} ms per case')"
 done
 echo "== in force (auto, this machine)"
-grep -o 'sandbox auto[^"]*' "$work/out/"*/results.json | head -n 1 | sed 's/\\n/\n   /g; s/^[^:]*:/   /'
+grep -ho '"sandbox": "[^"]*' "$work/out/"*/results.json | head -n 1 | sed 's/^"sandbox": "/   /; s/\\n/\n   /g'

@@ -157,6 +157,10 @@ class HostileStage : public ::testing::TestWithParam<Hostile> {
 TEST_P(HostileStage, FailsAndChangesNothingOutside) {
   const Hostile& hostile = GetParam();
   const Expectation& expected = kExpected.at(hostile.name);
+#ifdef PATHWAY_SANITIZED
+  // An AddressSanitizer build cannot limit address space (core/sandbox.cpp): 100 GB would be real.
+  if (hostile.name == "allocate_100gb") GTEST_SKIP() << "no memory limit in a sanitizer build";
+#endif
   const Listener listener;
   ASSERT_GT(listener.port(), 0);
 
@@ -265,8 +269,7 @@ TEST(HostileBaked, ReferencesBakedIntoTheSourceFailAsTooCloseAndOnTheCourseCases
       tooClose += !c->courseOnly && line.output.find("too close to be true") != std::string::npos;
     }
   }
-  EXPECT_GE(tooClose, shipped - 1)
-      << test::readTextFile((dir / "out/results.json").string());
+  EXPECT_GE(tooClose, shipped - 1) << test::readTextFile((dir / "out/results.json").string());
   EXPECT_GE(courseFailed, 1u);
   fs::remove_all(dir);
 }

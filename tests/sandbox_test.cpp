@@ -93,7 +93,13 @@ TEST(Sandbox, AProgramInsideReadsAndWritesOnlyWhatItsPolicySays) {
   command.policy.readable = {(dir / "readable").string()};
   command.policy.writable = {(dir / "mine").string()};
   shareWithSandboxUser((dir / "mine").string(), command.mode);
-  command.program = {"/bin/bash", "-c",
+  // Without SHELL, bash looks its user up, and glibc tries nscd's local socket first: that
+  // socket is refused, not punished.
+  command.program = {"/usr/bin/env",
+                     "-u",
+                     "SHELL",
+                     "/bin/bash",
+                     "-c",
                      "cat " + (dir / "readable/note").string() + "; echo made > " +
                          (dir / "mine/made").string() + "; cat " +
                          (dir / "elsewhere/secret").string() + "; echo taken > " +

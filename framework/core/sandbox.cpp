@@ -8,6 +8,7 @@
 #include <seccomp.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
+#include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/syscall.h>
 #include <unistd.h>
@@ -133,12 +134,17 @@ void applySeccomp(const SandboxPolicy& policy) {
     if (syscallNumber < 0) return;  // not on this architecture
     failed |= seccomp_rule_add(filter.get(), SCMP_ACT_KILL_PROCESS, syscallNumber, 0);
   };
-  // No network, not even a UNIX socket: rendering and compiling need none. Nothing that reaches
-  // into another process, the kernel or around these rules (io_uring performs its operations
-  // outside the system calls filtered here).
-  for (int number : {SCMP_SYS(socket),
-                     SCMP_SYS(socketpair),
-                     SCMP_SYS(ptrace),
+  // No network: a socket of any family but a local one kills. A local (UNIX) socket is refused
+  // instead, since glibc itself asks for one on the quiet (a user-name lookup tries nscd first,
+  // as bash does when SHELL is unset) and falls back to files; it never gets a socket to connect
+  // to another process with. Nothing that reaches into another process, the kernel or around
+  // these rules (io_uring performs its operations outside the system calls filtered here).
+  failed |= seccomp_rule_add(filter.get(), SCMP_ACT_ERRNO(EACCES), SCMP_SYS(socket), 1,
+                             SCMP_A0(SCMP_CMP_EQ, AF_UNIX));
+  failed |= seccomp_rule_add(filter.get(), SCMP_ACT_KILL_PROCESS, SCMP_SYS(socket), 1,
+                             SCMP_A0(SCMP_CMP_NE, AF_UNIX));
+  failed |= seccomp_rule_add(filter.get(), SCMP_ACT_ERRNO(EACCES), SCMP_SYS(socketpair), 0);
+  for (int number : {SCMP_SYS(ptrace),
                      SCMP_SYS(process_vm_readv),
                      SCMP_SYS(process_vm_writev),
                      SCMP_SYS(io_uring_setup),
@@ -198,7 +204,12 @@ std::string bytesText(uint64_t bytes) {
 std::string limitsText(const SandboxPolicy& policy) {
   std::string text;
   auto add = [&text](const std::string& part) { text += (text.empty() ? "" : ", ") + part; };
+#ifdef __SANITIZE_ADDRESS__
+  // AddressSanitizer reserves terabytes of shadow memory: an address-space limit stops it.
+  if (policy.addressSpaceBytes) add("memory not limited (an AddressSanitizer build)");
+#else
   if (policy.addressSpaceBytes) add("memory " + bytesText(policy.addressSpaceBytes));
+#endif
   if (policy.cpuSeconds) add("CPU " + std::to_string(policy.cpuSeconds) + " s");
   if (policy.openFiles) add(std::to_string(policy.openFiles) + " open files");
   if (policy.fileBytes) add("files up to " + bytesText(policy.fileBytes));
@@ -285,14 +296,15 @@ SandboxState probeSandbox(const SandboxPolicy& policy, SandboxMode mode) {
         "files: no Landlock in this kernel (5.13 or newer, with landlock in its LSM list)");
   if (abi >= 4 || seccomp)
     state.inForce.push_back(
-        std::string("network: ") + (seccomp ? "seccomp refuses every socket" : "") +
+        std::string("network: ") +
+        (seccomp ? "seccomp kills on a network socket, refuses a local one" : "") +
         (abi >= 4 && seccomp ? ", " : "") + (abi >= 4 ? landlockName + " refuses TCP" : ""));
   else
     state.missing.push_back("network: neither seccomp nor Landlock ABI 4 in this kernel");
   if (!startsPrograms) {
     if (seccomp)
       state.inForce.push_back(
-          "processes: seccomp refuses fork, exec and every clone but a "
+          "processes: seccomp forbids fork, exec and every clone but a "
           "thread's; no ptrace");
     else
       state.missing.push_back("processes: no seccomp in this kernel");
@@ -318,7 +330,9 @@ SandboxState probeSandbox(const SandboxPolicy& policy, SandboxMode mode) {
 SandboxState enterSandbox(const SandboxPolicy& policy, SandboxMode mode) {
   const SandboxState state = probeSandbox(policy, mode);
   if (mode == SandboxMode::Off) return state;
+#ifndef __SANITIZE_ADDRESS__
   setLimit(RLIMIT_AS, policy.addressSpaceBytes);
+#endif
   setLimit(RLIMIT_CPU, policy.cpuSeconds);
   setLimit(RLIMIT_NOFILE, policy.openFiles);
   setLimit(RLIMIT_FSIZE, policy.fileBytes);

@@ -4,7 +4,8 @@
 // (Landlock binds the calling thread and what it starts afterwards). It needs no privileges:
 //   - files: Landlock (kernel 5.13+) lets it read only what the policy lists and write only in
 //     the policy's folders; no other submission, no reference, no report, no home;
-//   - network: Landlock's TCP rules (ABI 4+) and a seccomp filter that forbids every socket;
+//   - network: Landlock's TCP rules (ABI 4+) and a seccomp filter that kills on a network
+//     socket (a local UNIX one is refused: glibc asks for one on its own, to reach nscd);
 //   - processes: a seccomp filter that forbids fork, exec and every clone but a thread's (where
 //     the policy starts none), and Landlock's scopes (ABI 6+): no signal to a process outside,
 //     no abstract UNIX socket; no ptrace, no new privileges. A forbidden system call kills the
