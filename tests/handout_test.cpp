@@ -2,7 +2,8 @@
 // reference stages compiled and no solution code, unpacked into a fresh folder, built, its own
 // suite passed and scripts/start run there without a display. Then its self-grade gives the
 // verdict the autograder (`pathway grade --submission` here) gives, case by case: on the untouched
-// skeletons, and on a submission compiled into the handout. Not part of the handout itself.
+// skeletons, and on a submission with a wrong stage and one that does not compile, which costs
+// only its own stage. Not part of the handout itself.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -102,22 +103,45 @@ TEST_F(Handout, ShipsTheReferenceCompiledBuildsPassesItsSuiteAndGradesAsTheAutog
             std::string::npos);
   EXPECT_EQ(selfGrade, autograderVerdicts(kSource + "/assignments", dir_ / "skeletons"));
 
-  // A submission compiled into the handout: finished stages, with a missing cos θ in stage 2.
+  // A submission in the handout: finished stages, with a missing cos θ in stage 2 and a stage 4
+  // that does not compile. scripts/build fails for stage 4 alone: the program and the other
+  // stages build, the self-grade grades them and fails stage 4's cases with the compiler's
+  // message, and rendering stage 4 says why it is not there.
   const fs::path submission = dir_ / "submission";
   fs::create_directories(submission);
   const test::CommandOutcome prepared = test::runCommand(
       "cp " + kSource + "/solutions/*/*.cpp " + submission.string() + " && sed -i " +
       "'s/visibility \\* local.z/visibility/' " + (submission / "stage2_nested_ao.cpp").string() +
+      " && echo 'int unfinished = ;' >> " + (submission / "stage4_naive_recursion.cpp").string() +
       " && for f in " + submission.string() + "/*.cpp; do n=$(basename $f); " + "cp $f " +
       handout.string() + "/assignments/${n%%_*}/$n; done && cd " + handout.string() +
-      " && cmake --build --preset release --target pathway >/dev/null && " +
-      "build/release/pathway grade -q --report " + (dir_ / "self-grade").string());
-  EXPECT_EQ(prepared.exitCode, 1) << "a stage fails: " << prepared.output;
-  const std::map<std::string, std::string> selfGraded =
-      test::caseStatuses(test::readTextFile((dir_ / "self-grade/results.json").string()));
-  ASSERT_GE(selfGraded.size(), 15u) << prepared.output;
+      " && { scripts/build >build.log 2>&1; echo \"build status $?\"; }");
+  EXPECT_NE(prepared.output.find("build status 1"), std::string::npos) << prepared.output;
+  const std::string buildLog = test::readTextFile((handout / "build.log").string());
+  EXPECT_NE(buildLog.find("stage4_naive_recursion.cpp"), std::string::npos) << buildLog;
+  for (const char* stage : {"stage1", "stage2", "stage3", "stage5"})
+    EXPECT_TRUE(fs::exists(handout / "build/release/stages" / (std::string(stage) + ".so")))
+        << stage << "\n"
+        << buildLog;
+  const std::string pathway = (handout / "build/release/pathway").string();
+  const test::CommandOutcome stage4 =
+      test::runCommand(pathway + " render " + (handout / "scenes/cornell_box.gltf").string() +
+                       " -q -i stage4 --width 8 --spp 1 -o " + (dir_ / "stage4.png").string());
+  EXPECT_NE(stage4.exitCode, 0);
+  EXPECT_NE(stage4.output.find("your stage4 is not here: assignments/stage4/"), std::string::npos)
+      << stage4.output;
+  const test::CommandOutcome graded =
+      test::runCommand("cd " + handout.string() + " && " + pathway + " grade -q --report " +
+                       (dir_ / "self-grade").string());
+  EXPECT_EQ(graded.exitCode, 1) << "stages fail: " << graded.output;
+  const std::string selfGradeText = test::readTextFile((dir_ / "self-grade/results.json").string());
+  EXPECT_NE(selfGradeText.find("stage4_naive_recursion.cpp did not compile"), std::string::npos);
+  const std::map<std::string, std::string> selfGraded = test::caseStatuses(selfGradeText);
+  ASSERT_GE(selfGraded.size(), 15u) << graded.output;
   for (const auto& [name, status] : selfGraded)
-    EXPECT_EQ(status, name.rfind("Stage 2", 0) == 0 ? "failed" : "passed") << name;
+    EXPECT_EQ(status,
+              name.rfind("Stage 2", 0) == 0 || name.rfind("Stage 4", 0) == 0 ? "failed" : "passed")
+        << name;
   EXPECT_EQ(selfGraded, autograderVerdicts(submission, dir_ / "autograded"));
 }
 

@@ -138,6 +138,39 @@ bool markedProcessAlive(const std::string& marker) {
   return false;
 }
 
+// Under root the sandbox becomes nobody, unless nobody could not read what the policy lists
+// (a clone in /root): then auto stays root and says so, and require refuses naming the path.
+TEST(Sandbox, RootBecomesNobodyOnlyWhereNobodyCanRead) {
+  if (::geteuid() != 0) GTEST_SKIP() << "only root changes user";
+  const fs::path dir = test::freshTestFolder("pathway_sandbox_user");
+  fs::create_directories(dir / "open/inner");
+  fs::create_directories(dir / "closed/inner");
+  fs::permissions(dir, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                           fs::perms::others_read | fs::perms::others_exec);
+  fs::permissions(dir / "closed", fs::perms::owner_all);
+  SandboxPolicy open, closed;
+  open.readable = {(dir / "open/inner").string()};
+  closed.readable = {(dir / "closed/inner").string()};
+  EXPECT_TRUE(sandboxUser(open).changes);
+  const SandboxUser stays = sandboxUser(closed);
+  EXPECT_FALSE(stays.changes);
+  EXPECT_EQ(stays.staysRootFor, (dir / "closed/inner").string());
+  if (probeSandbox({}, SandboxMode::Auto).missing.empty()) {
+    EXPECT_NE(probeSandbox(closed, SandboxMode::Auto).summary().find("user: stays root"),
+              std::string::npos);
+    try {
+      probeSandbox(closed, SandboxMode::Require);
+      ADD_FAILURE() << "require ran as root";
+    } catch (const PathwayError& error) {
+      EXPECT_NE(std::string(error.what())
+                    .find("nobody, who cannot read " + (dir / "closed/inner").string()),
+                std::string::npos)
+          << error.what();
+    }
+  }
+  fs::remove_all(dir);
+}
+
 TEST(ChildProcess, WhatAChildLeavesBehindIsEndedEvenInASessionOfItsOwn) {
   const std::string marker = "pathway-left-behind-" + std::to_string(::getpid());
   const fs::path log = test::freshTestFolder("pathway_left_behind") / "log";

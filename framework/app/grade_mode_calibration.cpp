@@ -7,11 +7,15 @@
 #include "app/grade_modes.h"
 #include "grade/grade_calibration.h"
 #include "render/stage_library.h"
+#include "render/student_stages.h"
 
 namespace pathway {
 
 int calibrateMode(const GradeOptions& options) {
   for (const std::string& library : options.stageLibraries) loadStageLibrary(library);
+  // Calibrating the student's stages as this build made them (in this process, unsandboxed:
+  // a tool for the course's own code, not for submissions).
+  if (!options.gradeReference && options.stageLibraries.empty()) loadStudentStages();
   const Variant variant = options.gradeReference ? Variant::Reference : Variant::Student;
   const ComparisonSettings settings;
   std::printf("%-32s %5s %6s %9s %9s %9s %11s %10s %11s %8s\n", "case", "spp", "seeds", "failures",

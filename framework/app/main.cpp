@@ -10,6 +10,7 @@
 #include "core/sandboxed_command.h"
 #include "grade/case_render_job.h"
 #include "render/reference_library.h"
+#include "render/student_stages.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Pathway: from pixel filtering to path tracing, one stage at a time."};
@@ -51,8 +52,14 @@ int main(int argc, char** argv) {
   if (!stages.problem.empty() && !reference.app->parsed())
     std::fprintf(stderr, "pathway: note: reference stages %s\n", stages.describe().c_str());
   try {
-    for (const pathway::Command& command : commands)
-      if (command.app->parsed()) return command.run();
+    for (const pathway::Command& command : commands) {
+      if (!command.app->parsed()) continue;
+      // The commands that render the student's stages load them (render/student_stages.h); the
+      // grader builds the stage files itself and loads them only in its sandboxed child.
+      const std::string name = command.app->get_name();
+      if (name == "render" || name == "view" || name == "chart") pathway::loadStudentStages();
+      return command.run();
+    }
   } catch (const pathway::PathwayError& error) {
     std::fprintf(stderr, "pathway: error: %s\n", error.what());
     return 1;

@@ -262,9 +262,34 @@ std::vector<std::string> systemReadablePaths() {
           "/proc/self"};
 }
 
-SandboxUser sandboxUser() {
+namespace {
+
+// Whether any user may reach `path`: every folder on the way searchable by others (the last one
+// readable too). A path that does not exist is no obstacle (the policy skips it).
+bool othersCanReach(const std::string& path) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) return true;
+  const bool folder = S_ISDIR(info.st_mode);
+  if (!(info.st_mode & S_IROTH) || (folder && !(info.st_mode & S_IXOTH))) return false;
+  for (std::string up = path; up.size() > 1;) {
+    const size_t slash = up.find_last_of('/');
+    up = slash == 0 || slash == std::string::npos ? "/" : up.substr(0, slash);
+    if (::stat(up.c_str(), &info) != 0 || !(info.st_mode & S_IXOTH)) return false;
+    if (up == "/") break;
+  }
+  return true;
+}
+
+}  // namespace
+
+SandboxUser sandboxUser(const SandboxPolicy& policy) {
   SandboxUser user;
   if (::geteuid() != 0) return user;
+  for (const std::string& path : policy.readable)
+    if (!othersCanReach(path)) {
+      user.staysRootFor = path;
+      return user;
+    }
   user.changes = true;
   const passwd* nobody = ::getpwnam("nobody");
   user.uid = nobody ? nobody->pw_uid : 65534;
@@ -273,7 +298,7 @@ SandboxUser sandboxUser() {
 }
 
 void shareWithSandboxUser(const std::string& folder, SandboxMode mode) {
-  const SandboxUser user = sandboxUser();
+  const SandboxUser user = sandboxUser({});
   if (mode == SandboxMode::Off || !user.changes) return;
   if (::chown(folder.c_str(), user.uid, user.gid) != 0)
     throw PathwayError(folder +
@@ -313,10 +338,18 @@ SandboxState probeSandbox(const SandboxPolicy& policy, SandboxMode mode) {
     state.inForce.push_back("signals: " + landlockName + " scopes them (and abstract sockets)");
   const std::string limits = limitsText(policy);
   state.inForce.push_back("no new privileges" + (limits.empty() ? "" : "; limits: " + limits));
-  const SandboxUser user = sandboxUser();
+  const SandboxUser user = sandboxUser(policy);
   if (user.changes)
     state.inForce.push_back("user: runs as uid " + std::to_string(user.uid) +
                             " (nobody), not root");
+  if (!user.staysRootFor.empty()) {
+    if (mode == SandboxMode::Require)
+      throw PathwayError("--sandbox require runs student code as nobody, who cannot read " +
+                         user.staysRootFor + ": make it readable to all (chmod -R a+rX on it and " +
+                         "the folders above it), or grade with --sandbox auto");
+    state.inForce.push_back("user: stays root, since nobody cannot read " + user.staysRootFor +
+                            " (files, network and processes are held all the same)");
+  }
   const bool required = abi >= 1 && (abi >= 4 || seccomp) && (startsPrograms || seccomp);
   if (mode == SandboxMode::Require && !required) {
     std::string what;
@@ -338,7 +371,7 @@ SandboxState enterSandbox(const SandboxPolicy& policy, SandboxMode mode) {
   setLimit(RLIMIT_FSIZE, policy.fileBytes);
   const rlimit noCores{0, 0};
   ::setrlimit(RLIMIT_CORE, &noCores);
-  const SandboxUser user = sandboxUser();
+  const SandboxUser user = sandboxUser(policy);
   if (user.changes &&
       (::setgroups(0, nullptr) != 0 || ::setresgid(user.gid, user.gid, user.gid) != 0 ||
        ::setresuid(user.uid, user.uid, user.uid) != 0))

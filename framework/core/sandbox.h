@@ -53,8 +53,9 @@ std::vector<std::string> systemReadablePaths();
 
 // What `enterSandbox` would put in force in this process, without changing anything. With
 // SandboxMode::Require it throws PathwayError naming the missing kernel feature when files,
-// network or (where the policy starts no programs) processes cannot be shut in. (Only the
-// policy's limits and whether it starts programs matter here.)
+// network or (where the policy starts no programs) processes cannot be shut in, or when a root
+// grader's sandbox user could not read what the policy lists. (The policy's limits, whether it
+// starts programs and, under root, its readable paths matter here.)
 SandboxState probeSandbox(const SandboxPolicy& policy, SandboxMode mode);
 
 // Shuts this process in for good, and everything it starts afterwards. Call it before any thread
@@ -63,11 +64,15 @@ SandboxState probeSandbox(const SandboxPolicy& policy, SandboxMode mode);
 SandboxState enterSandbox(const SandboxPolicy& policy, SandboxMode mode);
 
 // The user a root process becomes (`nobody`), its uid and gid; other processes keep their own.
+// In auto mode root stays root where nobody could not read a path of the policy.
 struct SandboxUser {
-  bool changes = false;  // this process runs as root
+  bool changes = false;  // this process runs as root and becomes nobody
   unsigned uid = 0, gid = 0;
+  // Root that stays root (auto mode only): a path of the policy that nobody cannot reach, e.g. a
+  // tree in /root. Files, network and processes are still held by Landlock and seccomp.
+  std::string staysRootFor;
 };
-SandboxUser sandboxUser();
+SandboxUser sandboxUser(const SandboxPolicy& policy);
 // Hands `folder` to the sandbox user, so that a sandboxed process of a root grader can write in
 // it; does nothing when the mode is Off or the grader is not root. Throws PathwayError naming the
 // folder when it cannot.

@@ -110,6 +110,76 @@ bool readRow(const fs::path& path, SubmissionResult& row) {
 
 }  // namespace
 
+StageFilesGrade gradeStageFiles(const std::string& folder, const std::string& buildFolder,
+                                const GradingRun& gradingRun, double buildTimeLimit,
+                                const ComparisonSettings& settings) {
+  StageFilesGrade graded;
+  GradeSummary& summary = graded.summary;
+  Submission submission = findSubmission(folder);
+  for (const std::string& file : submission.missing) summary.notes.push_back("missing: " + file);
+  for (const std::string& file : submission.duplicates)
+    summary.notes.push_back("a second copy, not used: " + file);
+  for (const std::string& file : submission.ignored)
+    summary.notes.push_back("not part of any stage, not compiled: " + file);
+  // Only the stages graded are built.
+  std::set<int> gradedStages;
+  for (const GradingCase* c : gradingRun.cases) gradedStages.insert(c->stage);
+  for (auto it = submission.files.begin(); it != submission.files.end();)
+    it = gradedStages.count(it->first) ? std::next(it) : submission.files.erase(it);
+
+  // Each stage file builds on its own: one that does not compile costs its own stage only.
+  const SubmissionBuild build =
+      buildSubmission(submission, buildFolder, buildTimeLimit, gradingRun.sandbox);
+  graded.buildSeconds = build.seconds;
+  GradingRun run = gradingRun;
+  run.cases.clear();
+  std::vector<const GradingCase*> missing;
+  std::map<int, std::vector<const GradingCase*>> broken;
+  for (const GradingCase* c : gradingRun.cases) {
+    const auto built = build.stages.find(c->stage);
+    if (built == build.stages.end())
+      missing.push_back(c);
+    else if (!built->second.succeeded)
+      broken[c->stage].push_back(c);
+    else
+      run.cases.push_back(c);
+  }
+  for (const auto& [stage, result] : build.stages)
+    if (result.succeeded) run.stageLibraries.push_back(result.library);
+  const std::vector<std::string> notes = summary.notes;
+  if (!run.cases.empty()) summary = gradeStages(run, settings);
+  summary.notes = notes;
+  summary.sandbox =
+      build.sandbox + (summary.sandbox.empty() ? "" : "\nrenders: " + summary.sandbox);
+  std::set<int> crashed, timedOut, uncompiled;
+  for (const CaseResult& c : summary.cases) {
+    if (c.crashed) crashed.insert(c.stage);
+    if (c.timedOut) timedOut.insert(c.stage);
+  }
+  for (const auto& [stage, cases] : broken) {
+    const StageBuild& failed = build.stages.at(stage);
+    // The compiler's message once, for the whole stage; each case says where to find it.
+    summary.notes.push_back("stage " + std::to_string(stage) + ": " + failed.problem + ":\n" +
+                            failed.log);
+    failCases(summary, cases,
+              failed.problem + " (the compiler's message is at the top of the report)");
+    uncompiled.insert(stage);
+  }
+  graded.status = "graded";
+  if (!uncompiled.empty()) graded.status += "; " + stageList(uncompiled) + " did not compile";
+  if (!crashed.empty()) graded.status += "; " + stageList(crashed) + " crashed";
+  if (!timedOut.empty()) graded.status += "; " + stageList(timedOut) + " ran past the time limit";
+  if (!missing.empty()) {
+    failCases(summary, missing, "the stage's file is missing from the submission");
+    std::set<int> stages;
+    for (const GradingCase* c : missing) stages.insert(c->stage);
+    graded.status += "; " + stageList(stages) + (stages.size() == 1 ? " is" : " are") + " missing";
+  }
+  std::stable_sort(summary.cases.begin(), summary.cases.end(),
+                   [](const CaseResult& a, const CaseResult& b) { return a.stage < b.stage; });
+  return graded;
+}
+
 SubmissionResult gradeSubmission(const std::string& folder, const std::string& output,
                                  const GradingRun& gradingRun, double buildTimeLimit,
                                  const ComparisonSettings& settings) {
@@ -117,68 +187,14 @@ SubmissionResult gradeSubmission(const std::string& folder, const std::string& o
   row.name = submissionName(folder);
   const fs::path out(output);
   GradeSummary summary;
-  summary.title = "Pathway grading: " + row.name;
   try {
     fs::create_directories(out);
-    const Submission submission = findSubmission(folder);
-    for (const std::string& file : submission.missing) summary.notes.push_back("missing: " + file);
-    for (const std::string& file : submission.duplicates)
-      summary.notes.push_back("a second copy, not used: " + file);
-    for (const std::string& file : submission.ignored)
-      summary.notes.push_back("not part of any stage, not compiled: " + file);
-
-    // Each stage file builds on its own: one that does not compile costs its own stage only.
-    const SubmissionBuild build =
-        buildSubmission(submission, (out / "build").string(), buildTimeLimit, gradingRun.sandbox);
-    row.buildSeconds = build.seconds;
-    GradingRun run = gradingRun;
-    run.cases.clear();
-    std::vector<const GradingCase*> missing;
-    std::map<int, std::vector<const GradingCase*>> broken;
-    for (const GradingCase* c : gradingRun.cases) {
-      const auto built = build.stages.find(c->stage);
-      if (built == build.stages.end())
-        missing.push_back(c);
-      else if (!built->second.succeeded)
-        broken[c->stage].push_back(c);
-      else
-        run.cases.push_back(c);
-    }
-    for (const auto& [stage, result] : build.stages)
-      if (result.succeeded) run.stageLibraries.push_back(result.library);
-    const std::vector<std::string> notes = summary.notes;
-    if (!run.cases.empty()) {
-      summary = gradeStages(run, settings);
-      summary.title += " (" + row.name + ")";
-    }
-    summary.notes = notes;
-    summary.sandbox =
-        build.sandbox + (summary.sandbox.empty() ? "" : "\nrenders: " + summary.sandbox);
+    StageFilesGrade graded =
+        gradeStageFiles(folder, (out / "build").string(), gradingRun, buildTimeLimit, settings);
+    summary = std::move(graded.summary);
+    row.buildSeconds = graded.buildSeconds;
     row.gradeSeconds = summary.seconds;
-    std::set<int> crashed, timedOut, uncompiled;
-    for (const CaseResult& c : summary.cases) {
-      if (c.crashed) crashed.insert(c.stage);
-      if (c.timedOut) timedOut.insert(c.stage);
-    }
-    for (const auto& [stage, cases] : broken) {
-      const StageBuild& failed = build.stages.at(stage);
-      // The compiler's message once, for the whole stage; each case says where to find it.
-      summary.notes.push_back("stage " + std::to_string(stage) + ": " + failed.problem + ":\n" +
-                              failed.log);
-      failCases(summary, cases,
-                failed.problem + " (the compiler's message is at the top of the report)");
-      uncompiled.insert(stage);
-    }
-    row.status = "graded";
-    if (!uncompiled.empty()) row.status += "; " + stageList(uncompiled) + " did not compile";
-    if (!crashed.empty()) row.status += "; " + stageList(crashed) + " crashed";
-    if (!timedOut.empty()) row.status += "; " + stageList(timedOut) + " ran past the time limit";
-    if (!missing.empty()) {
-      failCases(summary, missing, "the stage's file is missing from the submission");
-      std::set<int> stages;
-      for (const GradingCase* c : missing) stages.insert(c->stage);
-      row.status += "; " + stageList(stages) + (stages.size() == 1 ? " is" : " are") + " missing";
-    }
+    row.status = graded.status;
     row.causes = likelyCauses(summary);
   } catch (const std::exception& error) {
     // Never stops the others: the submission gets the reason, and no points.
@@ -186,8 +202,8 @@ SubmissionResult gradeSubmission(const std::string& folder, const std::string& o
     summary.notes.push_back(row.status);
     failCases(summary, gradingRun.cases, row.status);
   }
-  std::stable_sort(summary.cases.begin(), summary.cases.end(),
-                   [](const CaseResult& a, const CaseResult& b) { return a.stage < b.stage; });
+  summary.title = summary.title.empty() ? "Pathway grading: " + row.name
+                                        : summary.title + " (" + row.name + ")";
   writeGradescopeResults((out / "results.json").string(), summary, settings);
   writeHtmlReport((out / "report").string(), summary, settings);
   row.points = summary.points();

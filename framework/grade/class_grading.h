@@ -40,6 +40,19 @@ std::vector<SubmissionResult> readClassResults(const ClassGrading& grading);
 // The submission folders in `submissions`, sorted; throws PathwayError when there are none.
 std::vector<std::string> submissionFolders(const std::string& submissions);
 
+// The stage files in `folder` (a submission, or a handout's assignments/), each built on its own
+// in `buildFolder` and graded on `run`'s cases; only the stages with cases are built. A stage
+// whose file does not compile or is missing fails its own cases with the reason (the compiler's
+// message is one of the summary's notes); the others are graded.
+struct StageFilesGrade {
+  GradeSummary summary;
+  double buildSeconds = 0.0;
+  std::string status;  // "graded", "graded; stage 2 did not compile; stage 4 crashed", ...
+};
+StageFilesGrade gradeStageFiles(const std::string& folder, const std::string& buildFolder,
+                                const GradingRun& run, double buildTimeLimit,
+                                const ComparisonSettings& settings);
+
 // One submission: builds `folder` in `output`/build and writes `output`/report/,
 // `output`/results.json (Gradescope's autograder runs this for each student) and its row of the
 // class table, `output`/submission.tsv.

@@ -92,9 +92,13 @@ SubmissionBuild buildSubmission(const Submission& submission, const std::string&
   SubmissionBuild build;
   fs::create_directories(buildFolder);
   const std::string folder = fs::absolute(buildFolder).lexically_normal().string();
+  // What every compile reads: the framework and the submission.
+  std::vector<std::string> probeCommand = stageLibraryCompileCommand();
+  probeCommand.push_back("-I" + submission.folder);
   build.sandbox =
       "compiler: " +
-      probeSandbox(sandboxedCompile({}, folder, timeLimit, sandbox).policy, sandbox).summary();
+      probeSandbox(sandboxedCompile(probeCommand, folder, timeLimit, sandbox).policy, sandbox)
+          .summary();
   // A compiler of a root grader runs as nobody: the build folder is its own.
   shareWithSandboxUser(folder, sandbox);
   for (const auto& [stage, file] : submission.files) {

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "render/reference_library.h"
 #include "render/stage_catalog.h"
+#include "render/student_stages.h"
 
 namespace pathway {
 namespace {
@@ -102,6 +103,12 @@ const IntegratorInfo& findIntegrator(std::string_view requested) {
            name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
   };
   const bool reference = endsWith("@ref") || endsWith(kWavefrontSuffix);
+  // A student stage that is not here: say why (it did not compile, it changed since).
+  std::string studentWhy;
+  for (int stage = 1; stage <= kStageCount && studentWhy.empty(); ++stage)
+    if (name == stageIntegratorName(stage, Variant::Student))
+      studentWhy = studentStageProblem(stage);
+  if (!studentWhy.empty()) throw PathwayError("your " + name + " is not here: " + studentWhy);
   throw PathwayError("unknown integrator '" + name + "' (known: " + known +
                      "; 'pathway render --list' describes them)" +
                      (reference && !why.empty() ? "; no reference stages: " + why : ""));

@@ -1,0 +1,21 @@
+// The student's stages as the program renders them. CMake builds each stage file of assignments/
+// into its own library (build/<preset>/stages/stageN.so) instead of linking it into the program,
+// so that a stage that does not compile costs only itself. The commands that render a student's
+// stage (render, view, chart) load them; the grader never does (it builds the stage files itself,
+// as the autograder does, and only its sandboxed child loads them).
+#pragma once
+
+#include <string>
+
+namespace pathway {
+
+// Loads every student stage library this build made, once; a stage whose library is missing or
+// cannot be loaded is remembered, not fatal (the other stages still render).
+void loadStudentStages();
+
+// Why student stage `stage` is not here ("" when it is, or when nothing was loaded): e.g.
+// "assignments/stage3/stage3_ao_4d.cpp did not compile (scripts/build shows the compiler's
+// message)".
+std::string studentStageProblem(int stage);
+
+}  // namespace pathway
