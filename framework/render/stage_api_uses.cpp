@@ -1,8 +1,9 @@
-// Uses every function render/stage_api.h documents, once. It is compiled but never linked or run:
-// the framework symbols it needs, with those the stage files of assignments/ and solutions/ need,
-// are all the program exports to the stage libraries it loads (CMakeLists.txt,
-// scripts/stage-exports.cmake). A stage file that calls anything else of the framework fails to
-// load, naming the symbol. Keep it in step with the signature block atop stage_api.h.
+// Uses every function render/stage_api.h documents, once. It is linked into the program but never
+// run: it keeps each of those functions in the program, and the framework symbols it needs, with
+// those of the reference's stage files, are all the program exports to the stage libraries it
+// loads (CMakeLists.txt, scripts/stage-exports.cmake). A stage file that calls anything else of
+// the framework fails to load, naming the symbol. Keep it in step with the signature block atop
+// stage_api.h.
 #include "render/stage_api.h"
 #include "stages/stage1.h"
 #include "stages/stage2.h"
