@@ -49,14 +49,16 @@ TEST_F(Grader, TheReferenceStagesPassWithFreshSeeds) {
     EXPECT_EQ(line.status, "passed") << line.output;
     EXPECT_EQ(line.image, "pass");
   }
-  // The report has a page and four pictures per case.
+  // The report has a page and, for a passing case, its image and the reference's: no maps and
+  // no difference image, which would look like a failure.
   EXPECT_TRUE(fs::exists(dir_ / "report/index.html"));
   size_t pictures = 0;
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir_ / "report/images"))
     ++pictures;
-  EXPECT_EQ(pictures, 5 * lines.size());
+  EXPECT_EQ(pictures, 2 * lines.size());
   const std::string page = test::readTextFile((dir_ / "report/index.html").string());
-  EXPECT_NE(page.find("stage3-corner-z.png"), std::string::npos);
+  EXPECT_NE(page.find("stage3-corner-image.png"), std::string::npos);
+  EXPECT_EQ(page.find("stage3-corner-z.png"), std::string::npos);
   EXPECT_NE(page.find("worst tile p"), std::string::npos);
   EXPECT_NE(page.find("M rays/s"), std::string::npos);  // your speed beside the reference's
 }
@@ -74,6 +76,11 @@ TEST_F(Grader, TheUntouchedSkeletonsFailOnTheirImages) {
       EXPECT_NE(line.output.find("TODO at assignments/stage"), std::string::npos) << line.output;
     }
   }
+  // A failing case shows its maps and difference beside the two images.
+  const std::string page = test::readTextFile((dir_ / "report/index.html").string());
+  for (const char* picture : {"image", "reference", "z", "block-z", "difference"})
+    EXPECT_NE(page.find(std::string("stage5-cornell-box-") + picture + ".png"), std::string::npos)
+        << picture;
 }
 
 TEST_F(Grader, BadInputGetsOneMessageAndAFailedResult) {

@@ -232,7 +232,16 @@ void writeHtmlReport(const std::string& folder, const GradeSummary& summary,
   }
   page << "</table>\n";
 
-  for (const CaseResult& c : summary.cases) {
+  // Failing cases first, each with its maps and difference; a passing case shows its image beside
+  // the reference's and no more (one render's noise against a mean of many would look like a
+  // failure in a difference image).
+  std::vector<const CaseResult*> ordered;
+  for (const CaseResult& c : summary.cases)
+    if (!c.passed) ordered.push_back(&c);
+  for (const CaseResult& c : summary.cases)
+    if (c.passed) ordered.push_back(&c);
+  for (const CaseResult* shown : ordered) {
+    const CaseResult& c = *shown;
     page << "<h2 id=\"" << escapeHtml(c.id) << "\">" << escapeHtml(c.title)
          << " &mdash; <span class=\"" << (c.passed ? "pass\">passed" : "fail\">failed")
          << "</span></h2>\n";
@@ -245,13 +254,13 @@ void writeHtmlReport(const std::string& folder, const GradeSummary& summary,
       };
       figure("image", c.image, "yours");
       figure("reference", c.reference, "reference");
-      if (!c.comparison.tiles.empty())
+      if (!c.passed && !c.comparison.tiles.empty())
         figure("z", zHeatmap(c.comparison),
                "signed z per tile (blue: darker, red: brighter; yellow: failing)");
-      if (!c.comparison.blocks.empty())
+      if (!c.passed && !c.comparison.blocks.empty())
         figure("block-z", blockZHeatmap(c.comparison),
                "signed z per block of the whole-image tests (full colour at |z| = 3)");
-      if (c.image.width == c.reference.width && c.image.height == c.reference.height)
+      if (!c.passed && c.image.width == c.reference.width && c.image.height == c.reference.height)
         figure("difference", differenceImage(c.image, c.reference),
                "difference (yours − reference)");
     }
