@@ -2,11 +2,10 @@
 // reference's earlier stages (or, --together, on the student's own), into --report. The student's
 // stage files are built here as the autograder builds a submission: each on its own, the compiler
 // and the renders sandboxed, so that a stage that does not compile fails only its own cases.
-#include <unistd.h>
-
 #include <filesystem>
 
 #include "app/grade_modes.h"
+#include "core/temporary_folder.h"
 #include "grade/class_grading.h"
 #include "render/integrator_registry.h"
 #include "render/reference_library.h"
@@ -14,22 +13,7 @@
 namespace pathway {
 namespace {
 
-namespace fs = std::filesystem;
-
 const std::string kStudentStagesFolder = PATHWAY_SOURCE_DIR "/assignments";
-
-// A build folder of this run's own, removed when the grade is done.
-struct ScratchFolder {
-  fs::path path = fs::temp_directory_path() / ("pathway-self-grade-" + std::to_string(::getpid()));
-  ScratchFolder() {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~ScratchFolder() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-};
 
 }  // namespace
 
@@ -44,8 +28,13 @@ int gradeStagesMode(const GradeOptions& options) {
   if (run.gradeReference || !run.stageLibraries.empty()) {
     summary = gradeStages(run, settings);  // the reference, or stage libraries built elsewhere
   } else {
-    const ScratchFolder build;
-    summary = gradeStageFiles(kStudentStagesFolder, (build.path / "build").string(), run,
+    const TemporaryFolder build("pathway-self-grade");
+    // Open to the sandbox's user (nobody, under root), which reads the libraries built in it.
+    namespace fs = std::filesystem;
+    fs::permissions(build.path(), fs::perms::owner_all | fs::perms::group_read |
+                                      fs::perms::group_exec | fs::perms::others_read |
+                                      fs::perms::others_exec);
+    summary = gradeStageFiles(kStudentStagesFolder, build.path() + "/build", run,
                               ClassGrading().buildTimeLimit, settings)
                   .summary;
     if (summary.title.empty()) summary.title = "Pathway grading: your stages";  // none compiled

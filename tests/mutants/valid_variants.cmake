@@ -1,8 +1,61 @@
 # Valid variants: correct stages written another way (another warp, basis, roulette rule,
 # splat range, filter form, NEE form), each estimating the reference's expected image.
-# The grader must pass them (expect: pass). Generated; each comment says why it is correct.
+# The grader must pass them (expect: pass). Each comment says why it is correct.
 # tests/mutants/CMakeLists.txt builds them on demand (target pathway_mutants_variants), never in
 # the suite; scripts/mutant-causes variants grades them.
+
+# Helpers more than one variant adds to its stage file, written once (CMake expands them in the
+# TO texts below).
+set(PATHWAY_VARIANT_CONCENTRIC_COSINE "// Cosine-weighted direction by Shirley & Chiu's concentric map: the unit square, stretched to
+// side 2 around 0, onto the unit disk (area-preserving up to the constant π/4: uniform in,
+// uniform out), then lifted to z.
+Vec3 sampleConcentricCosine(Vec2 u) {
+  const float a = 2.0f * u.x - 1.0f, b = 2.0f * u.y - 1.0f@SEMICOLON@
+  float r = 0.0f, phi = 0.0f@SEMICOLON@
+  if (a != 0.0f || b != 0.0f) {
+    if (std::fabs(a) > std::fabs(b)) {
+      r = a@SEMICOLON@
+      phi = 0.25f * kPi * (b / a)@SEMICOLON@
+    } else {
+      r = b@SEMICOLON@
+      phi = 0.5f * kPi - 0.25f * kPi * (a / b)@SEMICOLON@
+    }
+  }
+  const float x = r * std::cos(phi), y = r * std::sin(phi)@SEMICOLON@
+  return Vec3(x, y, std::sqrt(std::fmax(0.0f, 1.0f - r * r)))@SEMICOLON@
+}")
+set(PATHWAY_VARIANT_GRAM_SCHMIDT "// An orthonormal basis around n by Gram-Schmidt: take an axis not too close to n, remove its
+// component along n, normalise, and complete with a cross product.
+Vec3 gramSchmidtToWorld(const Vec3& n, const Vec3& local) {
+  const Vec3 helper = std::fabs(n.x) > 0.9f ? Vec3(0.0f, 1.0f, 0.0f) : Vec3(1.0f, 0.0f, 0.0f)@SEMICOLON@
+  const Vec3 t = glm::normalize(helper - glm::dot(helper, n) * n)@SEMICOLON@
+  const Vec3 b = glm::cross(n, t)@SEMICOLON@
+  return local.x * t + local.y * b + local.z * n@SEMICOLON@
+}")
+set(PATHWAY_VARIANT_FRISVAD "// Frisvad's (2012) branch-free basis around a unit n, with its special case at n = -z.
+Vec3 frisvadToWorld(const Vec3& n, const Vec3& local) {
+  Vec3 b1, b2@SEMICOLON@
+  if (n.z < -0.9999999f) {
+    b1 = Vec3(0.0f, -1.0f, 0.0f)@SEMICOLON@
+    b2 = Vec3(-1.0f, 0.0f, 0.0f)@SEMICOLON@
+  } else {
+    const float a = 1.0f / (1.0f + n.z)@SEMICOLON@
+    const float b = -n.x * n.y * a@SEMICOLON@
+    b1 = Vec3(1.0f - n.x * n.x * a, b, -n.x)@SEMICOLON@
+    b2 = Vec3(b, 1.0f - n.y * n.y * a, -n.y)@SEMICOLON@
+  }
+  return local.x * b1 + local.y * b2 + local.z * n@SEMICOLON@
+}")
+set(PATHWAY_VARIANT_UNIFORM_HEMISPHERE "// Uniform on the hemisphere (Archimedes: cos θ is uniform between 0 and 1), density 1 / (2π).
+Vec3 sampleUniformHemisphere(Vec2 u) {
+  const float z = 1.0f - u.x@SEMICOLON@  // never 0: never exactly in the surface plane
+  const float r = std::sqrt(std::fmax(0.0f, 1.0f - z * z))@SEMICOLON@
+  const float phi = 2.0f * kPi * u.y@SEMICOLON@
+  return Vec3(r * std::cos(phi), r * std::sin(phi), z)@SEMICOLON@
+}")
+set(PATHWAY_VARIANT_UNIFORM_PDF "float uniformHemispherePdf(float cosTheta) {
+  return cosTheta > 0.0f ? 0.5f * kInvPi : 0.0f@SEMICOLON@
+}")
 
 # The pixels whose centre is within r of p (j in [p-0.5-r, p-0.5+r]) all lie in
 # floor(p) - ceil(r) .. floor(p) + ceil(r); the extra pixels get f = 0 from filter.evaluate (it is
@@ -107,17 +160,9 @@ pathway_mutant(v_s1_gaussian_normalised 1 stage1/stage1_filtering.cpp pass "Gaus
 # (handed on to stages 3-5) are kept as the reference's.
 pathway_mutant(v_s2_uniform_hemisphere 2 stage2/stage2_nested_ao.cpp pass "AO directions uniform on the hemisphere, divided by their pdf 1/(2 pi): estimate 2 V cos"
   FROM "float ambientOcclusionSample(const RenderContext& context, const SurfaceHit& hit, Vec2 u,"
-  TO "// Uniform on the hemisphere (Archimedes: cos θ is uniform between 0 and 1), density 1 / (2π).
-Vec3 sampleUniformHemisphere(Vec2 u) {
-  const float z = 1.0f - u.x@SEMICOLON@  // never 0: never exactly in the surface plane
-  const float r = std::sqrt(std::fmax(0.0f, 1.0f - z * z))@SEMICOLON@
-  const float phi = 2.0f * kPi * u.y@SEMICOLON@
-  return Vec3(r * std::cos(phi), r * std::sin(phi), z)@SEMICOLON@
-}
+  TO "${PATHWAY_VARIANT_UNIFORM_HEMISPHERE}
 
-float uniformHemispherePdf(float cosTheta) {
-  return cosTheta > 0.0f ? 0.5f * kInvPi : 0.0f@SEMICOLON@
-}
+${PATHWAY_VARIANT_UNIFORM_PDF}
 
 float ambientOcclusionSample(const RenderContext& context, const SurfaceHit& hit, Vec2 u,"
   FROM "const Vec3 local = sampleCosineHemisphere(u)"
@@ -130,24 +175,7 @@ float ambientOcclusionSample(const RenderContext& context, const SurfaceHit& hit
 # cos θ / π. Same density as the reference's, the numbers land elsewhere.
 pathway_mutant(v_s2_concentric_disk 2 stage2/stage2_nested_ao.cpp pass "cosine sampling by Shirley-Chiu's concentric disk map instead of Malley's polar map"
   FROM "Vec3 sampleCosineHemisphere(Vec2 u) {"
-  TO "// Cosine-weighted direction by Shirley & Chiu's concentric map: the unit square, stretched to
-// side 2 around 0, onto the unit disk (area-preserving up to the constant π/4: uniform in,
-// uniform out), then lifted to z.
-Vec3 sampleConcentricCosine(Vec2 u) {
-  const float a = 2.0f * u.x - 1.0f, b = 2.0f * u.y - 1.0f@SEMICOLON@
-  float r = 0.0f, phi = 0.0f@SEMICOLON@
-  if (a != 0.0f || b != 0.0f) {
-    if (std::fabs(a) > std::fabs(b)) {
-      r = a@SEMICOLON@
-      phi = 0.25f * kPi * (b / a)@SEMICOLON@
-    } else {
-      r = b@SEMICOLON@
-      phi = 0.5f * kPi - 0.25f * kPi * (a / b)@SEMICOLON@
-    }
-  }
-  const float x = r * std::cos(phi), y = r * std::sin(phi)@SEMICOLON@
-  return Vec3(x, y, std::sqrt(std::fmax(0.0f, 1.0f - r * r)))@SEMICOLON@
-}
+  TO "${PATHWAY_VARIANT_CONCENTRIC_COSINE}
 
 Vec3 sampleCosineHemisphere(Vec2 u) {
   return sampleConcentricCosine(u)@SEMICOLON@
@@ -159,14 +187,7 @@ Vec3 sampleCosineHemisphere(Vec2 u) {
 # around n (a rotation, possibly with a reflection, preserves solid angle and cos θ).
 pathway_mutant(v_s2_gram_schmidt_basis 2 stage2/stage2_nested_ao.cpp pass "local-to-world with a Gram-Schmidt basis around the normal instead of Frame"
   FROM "float ambientOcclusionSample(const RenderContext& context, const SurfaceHit& hit, Vec2 u,"
-  TO "// An orthonormal basis around n by Gram-Schmidt: take an axis not too close to n, remove its
-// component along n, normalise, and complete with a cross product.
-Vec3 gramSchmidtToWorld(const Vec3& n, const Vec3& local) {
-  const Vec3 helper = std::fabs(n.x) > 0.9f ? Vec3(0.0f, 1.0f, 0.0f) : Vec3(1.0f, 0.0f, 0.0f)@SEMICOLON@
-  const Vec3 t = glm::normalize(helper - glm::dot(helper, n) * n)@SEMICOLON@
-  const Vec3 b = glm::cross(n, t)@SEMICOLON@
-  return local.x * t + local.y * b + local.z * n@SEMICOLON@
-}
+  TO "${PATHWAY_VARIANT_GRAM_SCHMIDT}
 
 float ambientOcclusionSample(const RenderContext& context, const SurfaceHit& hit, Vec2 u,"
   FROM "const Vec3 direction = Frame(hit.normal).toWorld(local)"
@@ -178,20 +199,7 @@ float ambientOcclusionSample(const RenderContext& context, const SurfaceHit& hit
 # rounding.
 pathway_mutant(v_s2_frisvad_swapped_numbers 2 stage2/stage2_nested_ao.cpp pass "Frisvad's basis, the angle from u1 and the radius from u2 (r = sqrt(1 - u2)), cos from the world direction"
   FROM "Vec3 sampleCosineHemisphere(Vec2 u) {"
-  TO "// Frisvad's (2012) branch-free basis around a unit n, with its special case at n = -z.
-Vec3 frisvadToWorld(const Vec3& n, const Vec3& local) {
-  Vec3 b1, b2@SEMICOLON@
-  if (n.z < -0.9999999f) {
-    b1 = Vec3(0.0f, -1.0f, 0.0f)@SEMICOLON@
-    b2 = Vec3(-1.0f, 0.0f, 0.0f)@SEMICOLON@
-  } else {
-    const float a = 1.0f / (1.0f + n.z)@SEMICOLON@
-    const float b = -n.x * n.y * a@SEMICOLON@
-    b1 = Vec3(1.0f - n.x * n.x * a, b, -n.x)@SEMICOLON@
-    b2 = Vec3(b, 1.0f - n.y * n.y * a, -n.y)@SEMICOLON@
-  }
-  return local.x * b1 + local.y * b2 + local.z * n@SEMICOLON@
-}
+  TO "${PATHWAY_VARIANT_FRISVAD}
 
 Vec3 sampleCosineHemisphere(Vec2 u) {
   const float r = std::sqrt(std::fmax(0.0f, 1.0f - u.y))@SEMICOLON@
@@ -224,26 +232,11 @@ pathway_mutant(v_s3_uniform_gram_schmidt 3 stage3/stage3_ao_4d.cpp pass "own AO 
 
 #include \"render/stage_api.h\""
   FROM "class AmbientOcclusion4D : public Integrator {"
-  TO "// Uniform on the hemisphere (Archimedes: cos θ is uniform between 0 and 1), density 1 / (2π).
-Vec3 sampleUniformHemisphere(Vec2 u) {
-  const float z = 1.0f - u.x@SEMICOLON@  // never 0: never exactly in the surface plane
-  const float r = std::sqrt(std::fmax(0.0f, 1.0f - z * z))@SEMICOLON@
-  const float phi = 2.0f * kPi * u.y@SEMICOLON@
-  return Vec3(r * std::cos(phi), r * std::sin(phi), z)@SEMICOLON@
-}
+  TO "${PATHWAY_VARIANT_UNIFORM_HEMISPHERE}
 
-float uniformHemispherePdf(float cosTheta) {
-  return cosTheta > 0.0f ? 0.5f * kInvPi : 0.0f@SEMICOLON@
-}
+${PATHWAY_VARIANT_UNIFORM_PDF}
 
-// An orthonormal basis around n by Gram-Schmidt: take an axis not too close to n, remove its
-// component along n, normalise, and complete with a cross product.
-Vec3 gramSchmidtToWorld(const Vec3& n, const Vec3& local) {
-  const Vec3 helper = std::fabs(n.x) > 0.9f ? Vec3(0.0f, 1.0f, 0.0f) : Vec3(1.0f, 0.0f, 0.0f)@SEMICOLON@
-  const Vec3 t = glm::normalize(helper - glm::dot(helper, n) * n)@SEMICOLON@
-  const Vec3 b = glm::cross(n, t)@SEMICOLON@
-  return local.x * t + local.y * b + local.z * n@SEMICOLON@
-}
+${PATHWAY_VARIANT_GRAM_SCHMIDT}
 
 float uniformAmbientOcclusion(const RenderContext& context, const SurfaceHit& hit, Vec2 u,
                               float distance) {
@@ -282,39 +275,9 @@ pathway_mutant(v_s3_concentric_frisvad 3 stage3/stage3_ao_4d.cpp pass "own AO es
 
 #include \"render/stage_api.h\""
   FROM "class AmbientOcclusion4D : public Integrator {"
-  TO "// Cosine-weighted direction by Shirley & Chiu's concentric map: the unit square, stretched to
-// side 2 around 0, onto the unit disk (area-preserving up to the constant π/4: uniform in,
-// uniform out), then lifted to z.
-Vec3 sampleConcentricCosine(Vec2 u) {
-  const float a = 2.0f * u.x - 1.0f, b = 2.0f * u.y - 1.0f@SEMICOLON@
-  float r = 0.0f, phi = 0.0f@SEMICOLON@
-  if (a != 0.0f || b != 0.0f) {
-    if (std::fabs(a) > std::fabs(b)) {
-      r = a@SEMICOLON@
-      phi = 0.25f * kPi * (b / a)@SEMICOLON@
-    } else {
-      r = b@SEMICOLON@
-      phi = 0.5f * kPi - 0.25f * kPi * (a / b)@SEMICOLON@
-    }
-  }
-  const float x = r * std::cos(phi), y = r * std::sin(phi)@SEMICOLON@
-  return Vec3(x, y, std::sqrt(std::fmax(0.0f, 1.0f - r * r)))@SEMICOLON@
-}
+  TO "${PATHWAY_VARIANT_CONCENTRIC_COSINE}
 
-// Frisvad's (2012) branch-free basis around a unit n, with its special case at n = -z.
-Vec3 frisvadToWorld(const Vec3& n, const Vec3& local) {
-  Vec3 b1, b2@SEMICOLON@
-  if (n.z < -0.9999999f) {
-    b1 = Vec3(0.0f, -1.0f, 0.0f)@SEMICOLON@
-    b2 = Vec3(-1.0f, 0.0f, 0.0f)@SEMICOLON@
-  } else {
-    const float a = 1.0f / (1.0f + n.z)@SEMICOLON@
-    const float b = -n.x * n.y * a@SEMICOLON@
-    b1 = Vec3(1.0f - n.x * n.x * a, b, -n.x)@SEMICOLON@
-    b2 = Vec3(b, 1.0f - n.y * n.y * a, -n.y)@SEMICOLON@
-  }
-  return local.x * b1 + local.y * b2 + local.z * n@SEMICOLON@
-}
+${PATHWAY_VARIANT_FRISVAD}
 
 float concentricAmbientOcclusion(const RenderContext& context, const SurfaceHit& hit, Vec2 u,
                                  float distance) {
@@ -338,17 +301,9 @@ pathway_mutant(v_s4_uniform_branches 4 stage4/stage4_naive_recursion.cpp pass "b
 
 #include \"render/stage_api.h\""
   FROM "class NaiveRecursion : public Integrator {"
-  TO "// Uniform on the hemisphere (Archimedes: cos θ is uniform between 0 and 1), density 1 / (2π).
-Vec3 sampleUniformHemisphere(Vec2 u) {
-  const float z = 1.0f - u.x@SEMICOLON@  // never 0: never exactly in the surface plane
-  const float r = std::sqrt(std::fmax(0.0f, 1.0f - z * z))@SEMICOLON@
-  const float phi = 2.0f * kPi * u.y@SEMICOLON@
-  return Vec3(r * std::cos(phi), r * std::sin(phi), z)@SEMICOLON@
-}
+  TO "${PATHWAY_VARIANT_UNIFORM_HEMISPHERE}
 
-float uniformHemispherePdf(float cosTheta) {
-  return cosTheta > 0.0f ? 0.5f * kInvPi : 0.0f@SEMICOLON@
-}
+${PATHWAY_VARIANT_UNIFORM_PDF}
 
 class NaiveRecursion : public Integrator {"
   FROM "const Vec3 local = stage2_.sampleCosineHemisphere(samples.next2D())"
@@ -364,33 +319,9 @@ pathway_mutant(v_s4_concentric_gram_schmidt 4 stage4/stage4_naive_recursion.cpp 
 
 #include \"render/stage_api.h\""
   FROM "class NaiveRecursion : public Integrator {"
-  TO "// Cosine-weighted direction by Shirley & Chiu's concentric map: the unit square, stretched to
-// side 2 around 0, onto the unit disk (area-preserving up to the constant π/4: uniform in,
-// uniform out), then lifted to z.
-Vec3 sampleConcentricCosine(Vec2 u) {
-  const float a = 2.0f * u.x - 1.0f, b = 2.0f * u.y - 1.0f@SEMICOLON@
-  float r = 0.0f, phi = 0.0f@SEMICOLON@
-  if (a != 0.0f || b != 0.0f) {
-    if (std::fabs(a) > std::fabs(b)) {
-      r = a@SEMICOLON@
-      phi = 0.25f * kPi * (b / a)@SEMICOLON@
-    } else {
-      r = b@SEMICOLON@
-      phi = 0.5f * kPi - 0.25f * kPi * (a / b)@SEMICOLON@
-    }
-  }
-  const float x = r * std::cos(phi), y = r * std::sin(phi)@SEMICOLON@
-  return Vec3(x, y, std::sqrt(std::fmax(0.0f, 1.0f - r * r)))@SEMICOLON@
-}
+  TO "${PATHWAY_VARIANT_CONCENTRIC_COSINE}
 
-// An orthonormal basis around n by Gram-Schmidt: take an axis not too close to n, remove its
-// component along n, normalise, and complete with a cross product.
-Vec3 gramSchmidtToWorld(const Vec3& n, const Vec3& local) {
-  const Vec3 helper = std::fabs(n.x) > 0.9f ? Vec3(0.0f, 1.0f, 0.0f) : Vec3(1.0f, 0.0f, 0.0f)@SEMICOLON@
-  const Vec3 t = glm::normalize(helper - glm::dot(helper, n) * n)@SEMICOLON@
-  const Vec3 b = glm::cross(n, t)@SEMICOLON@
-  return local.x * t + local.y * b + local.z * n@SEMICOLON@
-}
+${PATHWAY_VARIANT_GRAM_SCHMIDT}
 
 class NaiveRecursion : public Integrator {"
   FROM "const Vec3 local = stage2_.sampleCosineHemisphere(samples.next2D())"
@@ -478,17 +409,9 @@ pathway_mutant(v_s5_triangle_fold 5 stage5/stage5_path_tracing.cpp pass "uniform
 # unbiased; the roulette (unchanged rule) sees the new throughput. Noisier.
 pathway_mutant(v_s5_uniform_continuation 5 stage5/stage5_path_tracing.cpp pass "continuation direction uniform on the hemisphere, throughput times brdf cos / (1/(2 pi)) = 2 rho cos"
   FROM "class PathTracer : public Integrator {"
-  TO "// Uniform on the hemisphere (Archimedes: cos θ is uniform between 0 and 1), density 1 / (2π).
-Vec3 sampleUniformHemisphere(Vec2 u) {
-  const float z = 1.0f - u.x@SEMICOLON@  // never 0: never exactly in the surface plane
-  const float r = std::sqrt(std::fmax(0.0f, 1.0f - z * z))@SEMICOLON@
-  const float phi = 2.0f * kPi * u.y@SEMICOLON@
-  return Vec3(r * std::cos(phi), r * std::sin(phi), z)@SEMICOLON@
-}
+  TO "${PATHWAY_VARIANT_UNIFORM_HEMISPHERE}
 
-float uniformHemispherePdf(float cosTheta) {
-  return cosTheta > 0.0f ? 0.5f * kInvPi : 0.0f@SEMICOLON@
-}
+${PATHWAY_VARIANT_UNIFORM_PDF}
 
 class PathTracer : public Integrator {"
   FROM "const Vec3 local = stage2_.sampleCosineHemisphere(samples.next2D())"
@@ -500,33 +423,9 @@ class PathTracer : public Integrator {"
 # numbers mapped to other directions.
 pathway_mutant(v_s5_concentric_gram_schmidt 5 stage5/stage5_path_tracing.cpp pass "continuation by concentric-disk cosine sampling and a Gram-Schmidt basis"
   FROM "class PathTracer : public Integrator {"
-  TO "// Cosine-weighted direction by Shirley & Chiu's concentric map: the unit square, stretched to
-// side 2 around 0, onto the unit disk (area-preserving up to the constant π/4: uniform in,
-// uniform out), then lifted to z.
-Vec3 sampleConcentricCosine(Vec2 u) {
-  const float a = 2.0f * u.x - 1.0f, b = 2.0f * u.y - 1.0f@SEMICOLON@
-  float r = 0.0f, phi = 0.0f@SEMICOLON@
-  if (a != 0.0f || b != 0.0f) {
-    if (std::fabs(a) > std::fabs(b)) {
-      r = a@SEMICOLON@
-      phi = 0.25f * kPi * (b / a)@SEMICOLON@
-    } else {
-      r = b@SEMICOLON@
-      phi = 0.5f * kPi - 0.25f * kPi * (a / b)@SEMICOLON@
-    }
-  }
-  const float x = r * std::cos(phi), y = r * std::sin(phi)@SEMICOLON@
-  return Vec3(x, y, std::sqrt(std::fmax(0.0f, 1.0f - r * r)))@SEMICOLON@
-}
+  TO "${PATHWAY_VARIANT_CONCENTRIC_COSINE}
 
-// An orthonormal basis around n by Gram-Schmidt: take an axis not too close to n, remove its
-// component along n, normalise, and complete with a cross product.
-Vec3 gramSchmidtToWorld(const Vec3& n, const Vec3& local) {
-  const Vec3 helper = std::fabs(n.x) > 0.9f ? Vec3(0.0f, 1.0f, 0.0f) : Vec3(1.0f, 0.0f, 0.0f)@SEMICOLON@
-  const Vec3 t = glm::normalize(helper - glm::dot(helper, n) * n)@SEMICOLON@
-  const Vec3 b = glm::cross(n, t)@SEMICOLON@
-  return local.x * t + local.y * b + local.z * n@SEMICOLON@
-}
+${PATHWAY_VARIANT_GRAM_SCHMIDT}
 
 class PathTracer : public Integrator {"
   FROM "const Vec3 local = stage2_.sampleCosineHemisphere(samples.next2D())"
