@@ -74,7 +74,7 @@ class Diagnosis : public ::testing::Test {
     direct_ = boxFiltered(directMask);
   }
 
-  pathway::Diagnosis diagnose(const Image& image) {
+  pathway::Diagnosis diagnose(const Image& image, int stage = 0, bool nextEventEstimation = true) {
     ComparisonSettings settings;
     settings.tileSize = kTile;
     ComparisonInput compared;
@@ -90,6 +90,8 @@ class Diagnosis : public ::testing::Test {
     input.tileVariance = &tileVariance_;
     input.replicates = kReplicates;
     input.tileSize = kTile;
+    input.stage = stage;
+    input.nextEventEstimation = nextEventEstimation;
     input.patterns[pattern::kDirect] = &direct_;
     return diagnoseDifference(input, comparison, settings);
   }
@@ -132,6 +134,16 @@ TEST_F(Diagnosis, ExtraLightWhereTheDirectMaskIsIsLit) {
   const pathway::Diagnosis d = diagnose(withNoise(image, 7));
   EXPECT_EQ(d.cause, LikelyCause::Lit) << d.line();
   EXPECT_NE(d.explanation.find("% too bright"), std::string::npos) << d.line();
+  // Stage 5 points at next-event estimation, unless the case runs without it.
+  const Image noisy = withNoise(image, 7);
+  EXPECT_NE(diagnose(noisy, 5).explanation.find("look at next-event estimation"),
+            std::string::npos);
+  const pathway::Diagnosis withoutNee = diagnose(noisy, 5, false);
+  EXPECT_EQ(withoutNee.cause, LikelyCause::Lit) << withoutNee.line();
+  EXPECT_EQ(withoutNee.explanation.find("look at next-event estimation"), std::string::npos)
+      << withoutNee.line();
+  EXPECT_NE(withoutNee.explanation.find("runs without next-event estimation"), std::string::npos)
+      << withoutNee.line();
 }
 
 TEST_F(Diagnosis, OneBrightTileIsLocal) {

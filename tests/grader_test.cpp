@@ -161,7 +161,9 @@ struct Mutant {
   std::string name;
   int stage = 0;
   std::string expect;  // fail, pass, crash or hang
-  std::string cause;   // for fail: the likely cause the bug should read as (scripts/mutant-causes)
+  // for fail: the likely cause the bug should read as (scripts/mutant-causes); for pass,
+  // "noisier": a valid estimator with more noise, which a note must point out
+  std::string cause;
   std::string library;
   std::string description;
 };
@@ -211,6 +213,12 @@ TEST_P(GraderMutant, IsJudgedByItsImage) {
     EXPECT_EQ(outcome.exitCode, 0) << mutant.description << "\n"
                                    << test::readTextFile((dir_ / "report/results.json").string());
     EXPECT_EQ(failed, 0u);
+    size_t noted = 0;
+    for (const ResultLine& line : lines)
+      noted += line.output.find("times as noisy as the reference's") != std::string::npos;
+    if (mutant.cause == "noisier") {
+      EXPECT_GE(noted, 1u) << "no case notes the extra noise";
+    }
   } else if (mutant.expect == "fail") {
     EXPECT_EQ(outcome.exitCode, 1) << mutant.description;
     EXPECT_GE(imageFailed, 1u) << mutant.description << ": no case of stage " << mutant.stage

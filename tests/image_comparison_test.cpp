@@ -210,5 +210,87 @@ TEST(ImageComparison, TheRendersOwnVarianceExcusesAFireflyButNotABiasEverywhere)
   EXPECT_FALSE(hidden.passed(settings));
 }
 
+// A render in 8 sample batches, `noise` times the reference's standard deviation, `bias` off:
+// the whole image (the batches' mean) and its jackknife (the mean of the other 7, each in turn).
+struct BatchedRender {
+  Image image;
+  std::vector<Image> jackknife;
+};
+BatchedRender batchedRender(uint64_t seed, double noise, double bias) {
+  constexpr int kBatches = 8;
+  std::vector<Image> batches;
+  for (int b = 0; b < kBatches; ++b) {
+    // Each batch has kBatches times the whole render's variance.
+    Image batch = noisyRender(seed * 100 + b);
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        const double clean = 0.5 + 0.3 * x / kSize;
+        const glm::dvec3 deviation = glm::dvec3(batch.at(x, y)) - clean;
+        batch.at(x, y) = Color(clean + bias + noise * std::sqrt(double(kBatches)) * deviation);
+      }
+    batches.push_back(batch);
+  }
+  BatchedRender render{Image(kSize, kSize), {}};
+  for (size_t p = 0; p < render.image.pixels.size(); ++p) {
+    glm::dvec3 sum(0.0);
+    for (const Image& batch : batches) sum += glm::dvec3(batch.pixels[p]);
+    render.image.pixels[p] = Color(sum / double(kBatches));
+  }
+  for (const Image& left : batches) {
+    Image without(kSize, kSize);
+    for (size_t p = 0; p < without.pixels.size(); ++p)
+      without.pixels[p] = Color(
+          (glm::dvec3(render.image.pixels[p]) * double(kBatches) - glm::dvec3(left.pixels[p])) /
+          double(kBatches - 1));
+    render.jackknife.push_back(without);
+  }
+  return render;
+}
+
+TEST(ImageComparison, ANoisierValidRenderPassesByItsOwnVarianceAndABiasStillFails) {
+  const Reference reference = makeReference();
+  const ComparisonSettings settings;
+  ComparisonInput input;
+  input.reference = &reference.mean;
+  input.tileVariance = &reference.tileVariance;
+  input.replicates = kReplicates;
+  input.negativeValuesAllowed = true;  // Gaussian noise this wide dips below 0
+  // Three times the reference's standard deviation (9 times its variance), unbiased: judged by
+  // the reference's noise alone it fails every time; by its own (the jackknife) it passes. Each
+  // of the 20 seeds fails by chance with probability about 1e-3 (the two family-wise levels), so
+  // all 20 pass but for about 2 % of runs; the seeds are fixed.
+  int passedWithout = 0;
+  for (uint64_t seed = 1; seed <= 20; ++seed) {
+    const BatchedRender render = batchedRender(seed, 3.0, 0.0);
+    input.image = &render.image;
+    input.jackknife = nullptr;
+    passedWithout += compareImages(input, settings).passed(settings);
+    input.jackknife = &render.jackknife;
+    const Comparison judged = compareImages(input, settings);
+    EXPECT_TRUE(judged.passed(settings)) << "seed " << seed << "\n" << judged.describe(settings);
+    // Its own variance over the replicates': 9 expected, the jackknife's spread around it.
+    EXPECT_NEAR(judged.noiseRatio, 9.0, 3.0);
+    EXPECT_NE(judged.describe(settings).find("times as noisy as the reference's"),
+              std::string::npos);
+  }
+  EXPECT_EQ(passedWithout, 0);
+  // The same noise with a bias of 0.02 everywhere (about one standard deviation of a tile mean
+  // of this render, 8.5 over the image's 64 tiles) fails the whole-image test.
+  const BatchedRender biased = batchedRender(21, 3.0, 0.02);
+  input.image = &biased.image;
+  input.jackknife = &biased.jackknife;
+  EXPECT_FALSE(compareImages(input, settings).passed(settings));
+  // A render 100 times as noisy (variance 10⁴ times) cannot hide a bias of 0.1 behind it: its own
+  // variance counts up to ownNoiseCap (64) times the replicates', a tile standard deviation of
+  // 0.05, so each tile is at z = 2 and the mean shift at 16 standard errors.
+  const BatchedRender hidden = batchedRender(22, 100.0, 0.1);
+  input.image = &hidden.image;
+  input.jackknife = &hidden.jackknife;
+  const Comparison capped = compareImages(input, settings);
+  EXPECT_LT(capped.omnibusP, settings.omnibusAlpha) << capped.describe(settings);
+  EXPECT_NE(capped.describe(settings).find("allow for no more than 64 times"), std::string::npos)
+      << capped.describe(settings);
+}
+
 }  // namespace
 }  // namespace pathway

@@ -28,8 +28,10 @@ TEST(ImageFiles, ExrKeepsColourVarianceWeightLayersAndMetadata) {
   const fs::path folder = fs::temp_directory_path() / "pathway_image_io_test";
   fs::create_directories(folder);
   const int width = 5, height = 3;
-  FilmImages written{pattern(width, height, 0.0f), pattern(width, height, 1000.0f),
-                     pattern(width, height, 2000.0f)};
+  FilmImages written{pattern(width, height, 0.0f),
+                     pattern(width, height, 1000.0f),
+                     pattern(width, height, 2000.0f),
+                     {pattern(width, height, 5000.0f), pattern(width, height, 6000.0f)}};
   for (Color& w : written.weight.pixels) w = Color(w.x);  // one weight channel
   const std::string path = (folder / "film.exr").string();
   RenderMetadata metadata;
@@ -39,6 +41,10 @@ TEST(ImageFiles, ExrKeepsColourVarianceWeightLayersAndMetadata) {
   EXPECT_EQ(read.images.color.pixels, written.color.pixels);
   EXPECT_EQ(read.images.variance.pixels, written.variance.pixels);
   EXPECT_EQ(read.images.weight.pixels, written.weight.pixels);
+  ASSERT_EQ(read.images.jackknife.size(), 2u);  // the jackknife images, in order, not as layers
+  EXPECT_EQ(read.images.jackknife[0].pixels, written.jackknife[0].pixels);
+  EXPECT_EQ(read.images.jackknife[1].pixels, written.jackknife[1].pixels);
+  EXPECT_TRUE(read.layers.empty());
   EXPECT_EQ(read.metadata.spp, 16u);
 
   const Image reference = pattern(width, height, 3000.0f), error = pattern(width, height, 4000.0f);
@@ -62,7 +68,7 @@ TEST(ImageFiles, RendersAreWrittenUncompressedAndLayeredReferencesCompressed) {
   Image flat(width, height);
   for (Color& pixel : flat.pixels) pixel = Color(0.5f);
   const std::string render = (folder / "render.exr").string();
-  writeExr(render, FilmImages{flat, flat, flat}, {});
+  writeExr(render, FilmImages{flat, flat, flat, {}}, {});
   EXPECT_GE(fs::file_size(render), 7 * 4 * floats);  // R, G, B, three variances, weight
   const std::string reference = (folder / "reference.exr").string();
   writeExrLayers(reference, {{"", &flat}, {"variance", &flat}}, {});

@@ -51,7 +51,7 @@ TEST(RenderMetadata, EveryFieldComesBackFromAnExrHeader) {
   const fs::path folder = fs::temp_directory_path() / "pathway_render_metadata_test";
   fs::create_directories(folder);
   const std::string path = (folder / "a.exr").string();
-  FilmImages images{Image(2, 2), Image(2, 2), Image(2, 2)};
+  FilmImages images{Image(2, 2), Image(2, 2), Image(2, 2), {}};
   const RenderMetadata w = everyField();
   writeExr(path, images, w);
   const RenderMetadata r = readImageFile(path).metadata;

@@ -265,5 +265,16 @@ TEST(Statistics, SidakCorrection) {
   EXPECT_THROW(sidakFamilyP(-0.1, 10), PathwayError);
 }
 
+TEST(Statistics, WelchDegreesOfFreedomFollowTheFormula) {
+  // (a + b)² / (a²/nuA + b²/nuB): 2 and 1 with 7 and 63 -> 9 / (4/7 + 1/63) = 15.3 (by hand).
+  EXPECT_NEAR(welchDegreesOfFreedom(2.0, 7.0, 1.0, 63.0), 9.0 / (4.0 / 7.0 + 1.0 / 63.0), 1e-12);
+  // One estimate alone keeps its own; equal estimates with equal degrees add them.
+  EXPECT_DOUBLE_EQ(welchDegreesOfFreedom(3.0, 7.0, 0.0, 63.0), 7.0);
+  EXPECT_DOUBLE_EQ(welchDegreesOfFreedom(1.0, 10.0, 1.0, 10.0), 20.0);
+  EXPECT_DOUBLE_EQ(welchDegreesOfFreedom(0.0, 7.0, 0.0, 63.0), 70.0);
+  EXPECT_THROW(welchDegreesOfFreedom(-1.0, 7.0, 1.0, 63.0), PathwayError);
+  EXPECT_THROW(welchDegreesOfFreedom(1.0, 0.0, 1.0, 63.0), PathwayError);
+}
+
 }  // namespace
 }  // namespace pathway

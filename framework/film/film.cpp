@@ -65,6 +65,13 @@ Film& Film::operator+=(const Film& other) {
   return *this;
 }
 
+Film& Film::operator-=(const Film& earlier) {
+  if (earlier.width_ != width_ || earlier.height_ != height_)
+    throw PathwayError("internal: subtracting films of different sizes");
+  for (size_t i = 0; i < sums_.size(); ++i) sums_[i] -= earlier.sums_[i];
+  return *this;
+}
+
 void Film::clear() {
   std::fill(sums_.begin(), sums_.end(), PixelSums{});
 }

@@ -47,6 +47,16 @@ struct PixelSums {
     sampleCount += o.sampleCount;
     return *this;
   }
+  PixelSums& operator-=(const PixelSums& o) {
+    weightedRadiance -= o.weightedRadiance;
+    weight -= o.weight;
+    absWeight -= o.absWeight;
+    squaredWeightRadiance -= o.squaredWeightRadiance;
+    squaredWeightRadiance2 -= o.squaredWeightRadiance2;
+    squaredWeight -= o.squaredWeight;
+    sampleCount -= o.sampleCount;
+    return *this;
+  }
 };
 
 // A rectangle of pixel sums in image coordinates. Splats outside the image are ignored.
@@ -94,6 +104,9 @@ class Film {
   // Adds another film's sums pixel by pixel: two renders over disjoint sample ranges become the
   // one render over both (up to the order of the floating-point additions).
   Film& operator+=(const Film& other);
+  // Takes an earlier state of the same render away: what the passes since then added (the
+  // grader's jackknife, grade/jackknife_render.h).
+  Film& operator-=(const Film& earlier);
   void clear();
 
   // Σ w·L / Σ w per pixel. Where |Σ w| is tiny next to Σ |w| (possible with a negative-lobed

@@ -12,6 +12,7 @@
 
 #include "core/child_process.h"
 #include "core/error.h"
+#include "grade/jackknife_render.h"
 #include "io/image_io.h"
 #include "render/pixel_in_progress.h"
 #include "render/stage_library.h"
@@ -207,7 +208,7 @@ void runCaseRenderJob(const CaseRenderJob& job) {
                            job.together ? EarlierStages::Own : EarlierStages::Reference, job.seed,
                            job.singleRay ? ReferenceTracing::SingleRay : ReferenceTracing::Fastest);
     const RayTracer tracer(scenes.at(gradingCase.scene));
-    const RenderResult result = runRender(tracer, recipe);
+    const RenderResult result = renderWithJackknife(tracer, recipe, gradingCase.ownNoiseCounts());
     writeExr(job.imagePath(gradingCase), result.images, result.metadata);
   }
   alarm(0);

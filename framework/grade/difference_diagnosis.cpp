@@ -268,6 +268,10 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
       input.stage == 4
           ? "look at the weight of a branch that reaches an emitter: the BRDF, cos theta, the "
             "pdf, the average over the N branches"
+      : !input.nextEventEstimation
+          ? "this case runs without next-event estimation, so look at a path that hits an "
+            "emitter: the emission it adds, and the weight of the bounce that found it (BRDF, "
+            "cos theta, pdf)"
           : "look at next-event estimation: how an emitter and a point on it are picked and "
             "their pdf, both cosines and the distance, the shadow ray, one-sided emitters";
   if (direct)
@@ -393,7 +397,9 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
     }
     const auto explain = modulated.explain;
     modulated.explain = [explain](const std::vector<double>& c) {
-      return explain(c) + ", unevenly across the image";
+      // The factor varies across the image: say its average (u and v run over [-1, 1], where u²
+      // and v² average 1/3 and u, v, uv 0), not its constant term, which may be near 0.
+      return explain({c[0] + (c[3] + c[5]) / 3.0}) + ", unevenly across the image";
     };
     list.push_back(std::move(modulated));
   }

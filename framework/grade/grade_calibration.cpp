@@ -5,6 +5,7 @@
 #include <map>
 
 #include "grade/grading_reference.h"
+#include "grade/jackknife_render.h"
 #include "grade/reference_comparison.h"
 #include "grade/stage_grading.h"
 #include "scene/gltf_loader.h"
@@ -32,7 +33,7 @@ CalibrationResult calibrate(const GradingCase& gradingCase, uint32_t spp, Varian
   const auto start = std::chrono::steady_clock::now();
   auto passes = [&](uint64_t seed, Comparison* comparison) {
     const RenderRecipe recipe = atSpp.recipe(variant, EarlierStages::Reference, seed, tracing);
-    const RenderResult render = runRender(tracer, recipe);
+    const RenderResult render = renderWithJackknife(tracer, recipe, gradingCase.ownNoiseCounts());
     *comparison = compareWithReference(render.images, render.metadata, reference, settings);
     return comparison->passed(settings);
   };

@@ -42,6 +42,13 @@ struct GradingCase {
   std::string purpose;      // one line: what it is there to catch
   bool courseOnly = false;  // kept by the course: not in a handout (course_cases.cpp)
 
+  // Whether a valid submission may be noisier than the reference here, so that its render carries
+  // its own variance (grade/jackknife_render.h): from stage 2 on, where the student picks
+  // directions and their pdf. Stage 1's estimator is the framework's samples through the filter,
+  // so a valid splat is exactly as noisy as the reference's, and noise excuses nothing there (a
+  // box where Mitchell belongs is noisier on edges too).
+  bool ownNoiseCounts() const { return stage >= 2; }
+
   std::string id() const { return "stage" + std::to_string(stage) + "-" + name; }
   // The reference file's name under the references folder (course cases: in its course/).
   std::string referenceFile() const {

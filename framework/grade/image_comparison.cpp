@@ -5,6 +5,7 @@
 #include <limits>
 #include <sstream>
 
+#include "grade/jackknife_render.h"
 #include "grade/statistics.h"
 
 namespace pathway {
@@ -37,6 +38,9 @@ double mean(const Image& image) {
   return image.pixels.empty() ? 0.0 : sum / image.pixels.size();
 }
 
+// The jackknife overestimates the variance of stratified samples somewhat: a note from twice.
+constexpr double kNotedNoiseRatio = 2.0;
+
 std::string formatNumber(double value) {
   std::ostringstream out;
   out.precision(3);
@@ -54,14 +58,71 @@ struct Unit {
   glm::dvec3 t, z, p;
 };
 
+// The render's own noise at one tile or block, from its jackknife images (none: degrees 0).
+struct OwnVariance {
+  glm::dvec3 variance{0.0};  // of this unit's mean
+  double degreesOfFreedom = 0.0;
+  // Σ own / Σ replicates' over the unit and its 8 neighbours (where the replicates have noise;
+  // 0: nowhere), with its degrees of freedom: a stable estimate of how much noisier the render
+  // is here. The unit's own estimate alone (B - 1 degrees) is now and then far too small, by
+  // chance, and a render 9 times as noisy judged by the replicates' variance there fails.
+  glm::dvec3 neighbourhoodRatio{0.0};
+  glm::dvec3 neighbourhoodDegrees{0.0};
+};
+
+// Per unit (`units` row by row, `perRow` of them in a row): the render's own noise.
+std::vector<OwnVariance> ownVariances(const ComparisonInput& input,
+                                      const std::vector<TileBounds>& units, size_t perRow,
+                                      const Image& replicateVariance) {
+  std::vector<OwnVariance> own(units.size());
+  if (!input.jackknife || input.jackknife->size() < 2) return own;
+  const double batchDegrees = input.jackknife->size() - 1.0;
+  for (size_t i = 0; i < units.size(); ++i) {
+    const TileBounds& b = units[i];
+    own[i].variance = jackknifeVariance(*input.jackknife, b.x0, b.y0, b.x1, b.y1);
+    own[i].degreesOfFreedom = batchDegrees;
+  }
+  const long columns = static_cast<long>(perRow);
+  const long rows = static_cast<long>(units.size()) / columns;
+  for (long row = 0; row < rows; ++row)
+    for (long column = 0; column < columns; ++column) {
+      glm::dvec3 mine(0.0), theirs(0.0), counted(0.0);
+      for (long r = std::max(0L, row - 1); r <= std::min(rows - 1, row + 1); ++r)
+        for (long c = std::max(0L, column - 1); c <= std::min(columns - 1, column + 1); ++c) {
+          const TileBounds& b = units[r * columns + c];
+          const glm::dvec3 replicates(replicateVariance.at(b.x0, b.y0));
+          for (int channel = 0; channel < 3; ++channel)
+            if (replicates[channel] > 0.0) {
+              mine[channel] += own[r * columns + c].variance[channel];
+              theirs[channel] += replicates[channel];
+              counted[channel] += 1.0;
+            }
+        }
+      OwnVariance& unit = own[row * columns + column];
+      for (int channel = 0; channel < 3; ++channel)
+        if (theirs[channel] > 0.0) {
+          unit.neighbourhoodRatio[channel] = mine[channel] / theirs[channel];
+          unit.neighbourhoodDegrees[channel] = batchDegrees * counted[channel];
+        }
+    }
+  return own;
+}
+
+// The variance of the difference of the means over `b`: the replicates', widened by the render's
+// own where that is larger. `ownPixels` (the tiles): the render's per-pixel estimate, up to
+// ownVarianceCap, with the replicates' degrees of freedom. `ownBlock` (tiles and blocks): the
+// jackknife's estimate, up to ownNoiseCap, with Welch's degrees of freedom. `noise` and
+// `replicateNoise` add up the two estimates where the replicates have noise.
 Unit unitStatistic(const ComparisonInput& input, const ComparisonSettings& settings,
                    double degreesOfFreedom, const TileBounds& b, const Image* replicateVariance,
-                   bool ownVarianceExcuses) {
-  const glm::dvec3 difference = tileMean(*input.image, b) - tileMean(*input.reference, b);
+                   bool ownPixels, const OwnVariance& ownBlock, double* noise = nullptr,
+                   double* replicateNoise = nullptr) {
+  const glm::dvec3 referenceMean = tileMean(*input.reference, b);
+  const glm::dvec3 difference = tileMean(*input.image, b) - referenceMean;
   // Differences this small never count, even where the reference has no noise at all.
   const glm::dvec3 floor =
-      settings.relativeFloor * glm::abs(tileMean(*input.reference, b)) + settings.absoluteFloor;
-  glm::dvec3 variance(0.0);
+      settings.relativeFloor * glm::abs(referenceMean) + settings.absoluteFloor;
+  glm::dvec3 variance(0.0), degrees(degreesOfFreedom);
   if (replicateVariance) {
     // The submission is one more render like the R replicates; the reference mean is their
     // average: Var(m_image - m_reference) = V (1 + 1/R). Where the render's own estimate is
@@ -70,11 +131,39 @@ Unit unitStatistic(const ComparisonInput& input, const ComparisonSettings& setti
     // with its mean, so it cannot fail a correct stage; the cap keeps a broken stage from
     // excusing itself by its noise.
     const glm::dvec3 oneRender(replicateVariance->at(b.x0, b.y0));
-    const glm::dvec3 own = input.imageVariance && ownVarianceExcuses
-                               ? independentTileVariance(*input.imageVariance, b)
-                               : glm::dvec3(0.0);
-    const glm::dvec3 cap = settings.ownVarianceCap * glm::max(oneRender, floor * floor);
-    variance = glm::max(oneRender, glm::min(own, cap)) + oneRender / double(input.replicates);
+    const double replicates = input.replicates;
+    variance = oneRender * (1.0 + 1.0 / replicates);
+    if (ownPixels && input.imageVariance) {
+      const glm::dvec3 own = independentTileVariance(*input.imageVariance, b);
+      const glm::dvec3 cap = settings.ownVarianceCap * glm::max(oneRender, floor * floor);
+      variance = glm::max(oneRender, glm::min(own, cap)) + oneRender / replicates;
+    }
+    if (ownBlock.degreesOfFreedom > 0.0) {
+      const glm::dvec3 noiseless = settings.noiselessFraction * glm::abs(referenceMean);
+      const glm::dvec3 cap = settings.ownNoiseCap * glm::max(oneRender, noiseless * noiseless);
+      for (int c = 0; c < 3; ++c) {
+        if (oneRender[c] > 0.0 && noise) {
+          *noise += ownBlock.variance[c];
+          *replicateNoise += oneRender[c];
+        }
+        const double meanNoise = oneRender[c] / replicates;
+        // The neighbourhood's noise ratio widens the replicates' variance (stable: many degrees
+        // of freedom) ...
+        const double ratio = std::min(ownBlock.neighbourhoodRatio[c], settings.ownNoiseCap);
+        if (oneRender[c] * ratio + meanNoise > variance[c]) {
+          variance[c] = oneRender[c] * ratio + meanNoise;
+          degrees[c] = std::min(replicates - 1.0, ownBlock.neighbourhoodDegrees[c]);
+        }
+        // ... and the unit's own estimate, where larger still: a firefly, or noise where the
+        // replicates have none (uniform directions under an open sky).
+        const double own = std::min(ownBlock.variance[c], cap[c]);
+        if (own + meanNoise > variance[c]) {
+          variance[c] = own + meanNoise;
+          degrees[c] =
+              welchDegreesOfFreedom(own, ownBlock.degreesOfFreedom, meanNoise, replicates - 1.0);
+        }
+      }
+    }
   } else {
     if (input.imageVariance) variance += independentTileVariance(*input.imageVariance, b);
     if (input.referenceVariance) variance += independentTileVariance(*input.referenceVariance, b);
@@ -83,8 +172,8 @@ Unit unitStatistic(const ComparisonInput& input, const ComparisonSettings& setti
   Unit unit;
   for (int c = 0; c < 3; ++c) {
     unit.t[c] = difference[c] / std::sqrt(std::max(variance[c], 0.0) + floor[c] * floor[c]);
-    unit.p[c] = studentTTwoSidedP(unit.t[c], degreesOfFreedom);
-    unit.z[c] = studentTToNormal(unit.t[c], degreesOfFreedom);
+    unit.p[c] = studentTTwoSidedP(unit.t[c], degrees[c]);
+    unit.z[c] = studentTToNormal(unit.t[c], degrees[c]);
   }
   return unit;
 }
@@ -134,6 +223,14 @@ std::string Comparison::describe(const ComparisonSettings& settings) const {
   out << "whole image: omnibus " << formatP(omnibusP) << " (fails below "
       << formatNumber(settings.omnibusAlpha) << "); mean differs from the reference by "
       << formatNumber(100.0 * meanRelativeDifference) << "%\n";
+  if (noiseRatio >= kNotedNoiseRatio)
+    out << "your render is " << formatNumber(noiseRatio)
+        << " times as noisy as the reference's (variance, by the jackknife): "
+        << (noiseRatio < settings.ownNoiseCap
+                ? "a valid method may be; the whole-image tests allow for it"
+                : "the whole-image tests allow for no more than " +
+                      formatNumber(settings.ownNoiseCap) + " times")
+        << "\n";
   if (tooClose(settings))
     out << "too close to be true: the image differs from the reference " << formatNumber(closeness)
         << " times as much as the reference's own noise alone would make it differ (an image "
@@ -185,9 +282,16 @@ Comparison compareImages(const ComparisonInput& input, const ComparisonSettings&
   result.tileThresholdP = sidakPerTestAlpha(settings.tileAlpha, tests);
 
   double smallestP = 1.0;
-  for (const TileBounds& b : bounds) {
-    const Unit unit =
-        unitStatistic(input, settings, result.degreesOfFreedom, b, input.tileVariance, true);
+  const auto perRow = [&](int size) {
+    return static_cast<size_t>((image.width + size - 1) / size);
+  };
+  const std::vector<OwnVariance> ownTiles =
+      replicated ? ownVariances(input, bounds, perRow(settings.tileSize), *input.tileVariance)
+                 : std::vector<OwnVariance>(bounds.size());
+  for (size_t i = 0; i < bounds.size(); ++i) {
+    const TileBounds& b = bounds[i];
+    const Unit unit = unitStatistic(input, settings, result.degreesOfFreedom, b, input.tileVariance,
+                                    true, ownTiles[i]);
     TileVerdict tile{b.x0, b.y0, b.x1, b.y1};
     for (int c = 0; c < 3; ++c) {
       tile.t[c] = static_cast<float>(unit.t[c]);
@@ -204,16 +308,23 @@ Comparison compareImages(const ComparisonInput& input, const ComparisonSettings&
   // The omnibus tests add up blocks at least as large as the filter's reach, so that their
   // statistics are nearly independent, as the χ² sum assumes (small tiles under a wide filter
   // share most of their samples with their neighbours); what correlation remains is measured
-  // on the replicates and divides the mean shift. They use the replicates' variance alone, and
-  // each block's z is clamped, so that one rare huge sample cannot decide them either way.
+  // on the replicates and divides the mean shift. Each block's z is clamped, so that one rare
+  // huge sample cannot decide them either way.
   const bool blocks = input.blockVariance != nullptr || !replicated;
   const int blockSize = blocks ? settings.omnibusBlockSize : settings.tileSize;
   const std::vector<TileBounds> blockBounds = tilesOf(image.width, image.height, blockSize);
   glm::dvec3 sumZ(0.0), sumZ2(0.0);
-  for (const TileBounds& b : blockBounds) {
+  double noise = 0.0, replicateNoise = 0.0;
+  const Image* blockReplicateVariance =
+      replicated && blocks ? input.blockVariance : input.tileVariance;
+  const std::vector<OwnVariance> ownBlocks =
+      replicated ? ownVariances(input, blockBounds, perRow(blockSize), *blockReplicateVariance)
+                 : std::vector<OwnVariance>(blockBounds.size());
+  for (size_t i = 0; i < blockBounds.size(); ++i) {
+    const TileBounds& b = blockBounds[i];
     const Unit unit =
-        unitStatistic(input, settings, result.degreesOfFreedom, b,
-                      replicated && blocks ? input.blockVariance : input.tileVariance, false);
+        unitStatistic(input, settings, result.degreesOfFreedom, b, blockReplicateVariance, false,
+                      ownBlocks[i], &noise, &replicateNoise);
     const glm::dvec3 z = glm::clamp(unit.z, -settings.omnibusClamp, settings.omnibusClamp);
     TileVerdict block{b.x0, b.y0, b.x1, b.y1};
     block.z = Color(z);
@@ -230,6 +341,7 @@ Comparison compareImages(const ComparisonInput& input, const ComparisonSettings&
     smallestOmnibus = std::min({smallestOmnibus, result.chiSquaredP[c], result.meanShiftP[c]});
   }
   result.omnibusP = std::min(1.0, 6.0 * smallestOmnibus);
+  if (replicateNoise > 0.0) result.noiseRatio = noise / replicateNoise;
   if (replicated) measureCloseness(input, blockBounds, blocks, result);
   const double referenceMean = mean(reference);
   result.meanRelativeDifference =

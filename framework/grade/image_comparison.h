@@ -9,7 +9,11 @@
 //   3. omnibus tests per channel on the same statistics over blocks (8x8 pixels, larger than a
 //      filter's reach, so nearly independent) mapped to N(0, 1): Σ z² ~ χ²(blocks), which catches
 //      differences spread thinly over many blocks, and Σ z / sqrt(blocks) ~ N(0, 1), which
-//      catches a small bias of one sign everywhere. Bonferroni over the six;
+//      catches a small bias of one sign everywhere. Bonferroni over the six. A block's variance is
+//      the render's own where that is larger (the jackknife over its sample batches,
+//      grade/jackknife_render.h;
+//      Welch's degrees of freedom), so a valid but noisier method passes: they judge the
+//      expectation, not the noise;
 //   4. with replicates, the lower tail: Σ (m_image - m_reference)² over the blocks against Σ of
 //      the reference mean's own variance, which is what an image without any noise would show
 //      (the reference is a mean of R renders, not the truth). Far below it, the image copies the
@@ -42,6 +46,13 @@ struct ComparisonSettings {
   // a hit on a sub-pixel sliver) can be that far out, measured over 1000 seeds; a bias spread over
   // many tiles is still caught by the omnibus tests.
   double ownVarianceCap = 1e4;
+  // A block's own variance (the jackknife's) counts up to this many times the
+  // replicates' (8 times the standard deviation): a valid method may be that much noisier; a
+  // broken stage cannot excuse a bias by noise beyond it. Where the reference renders have no
+  // noise at all (cosine-weighted directions under an open sky give every sample the same value)
+  // the cap is relative to (noiselessFraction x the block's value)² instead.
+  double ownNoiseCap = 64.0;
+  double noiselessFraction = 0.01;
   // The omnibus tests clamp each block's z to ±this (P(|z| > 5) = 6e-7 for a correct stage).
   double omnibusClamp = 5.0;
   // An image fails as too close to the reference when even an exact image (no noise at all)
@@ -59,7 +70,10 @@ struct ComparisonInput {
   const Image* tileVariance = nullptr;
   const Image* blockVariance = nullptr;  // the same for the omnibus blocks (nullptr: use tiles)
   int replicates = 0;
-  const Image* imageVariance = nullptr;      // per pixel: the render's own variance estimate
+  const Image* imageVariance = nullptr;  // per pixel: the render's own variance estimate
+  // With replicates: the render's jackknife images (FilmImages::jackknife), for its own variance
+  // of tile and block means (nullptr or fewer than two: the replicates' alone).
+  const std::vector<Image>* jackknife = nullptr;
   const Image* referenceVariance = nullptr;  // per pixel, when tileVariance is absent
   // Var(Σ z) / blocks over the replicates: above 1 where a wide filter correlates neighbouring
   // blocks. The mean-shift test divides by it.
@@ -98,6 +112,10 @@ struct Comparison {
   double meanShiftP[3] = {1, 1, 1};     // per channel, Σ z / sqrt(tiles) ~ N(0, 1)
   double omnibusP = 1.0;                // family-wise (Bonferroni over the six)
   double meanRelativeDifference = 0.0;  // (mean image - mean reference) / mean reference
+  // The render's own variance over the replicates' (Σ over blocks and channels where the
+  // replicates have noise; 0: not measured): a note for a student whose method is valid but
+  // noisier, and a warning when it reaches the cap.
+  double noiseRatio = 0.0;
   // Test 4: Σ d² / Σ Var(reference mean) over the blocks (about 1 for an exact image, more for a
   // render; < 0: not measured, without replicates or noise), and P(an exact image <= it).
   double closeness = -1.0;

@@ -26,6 +26,7 @@ Comparison compareWithReference(const FilmImages& render, const RenderMetadata& 
     input.blockVariance = &grading->blockVariance;
     input.blockCorrelation = grading->record.blockCorrelation;
     input.replicates = grading->record.replicates;
+    if (!render.jackknife.empty()) input.jackknife = &render.jackknife;
   } else {
     if (!reference.variance_->pixels.empty()) input.referenceVariance = reference.variance_;
     if (!input.imageVariance && !input.referenceVariance)

@@ -212,6 +212,8 @@ void judgeAgainstReference(CaseResult& result, const LoadedImage& render,
     input.replicates = reference.record.replicates;
     input.tileSize = reference.record.tileSize;
     input.stage = result.stage;
+    input.nextEventEstimation =
+        (" " + render.metadata.params + " ").find(" nee=off ") == std::string::npos;
     for (const auto& [name, image] : reference.patterns) input.patterns[name] = &image;
     result.diagnosis = diagnoseDifference(input, result.comparison, settings);
   }

@@ -266,4 +266,11 @@ double sidakFamilyP(double minP, double tests) {
   return -std::expm1(tests * std::log1p(-minP));
 }
 
+double welchDegreesOfFreedom(double a, double nuA, double b, double nuB) {
+  if (!(a >= 0.0 && b >= 0.0 && nuA > 0.0 && nuB > 0.0))
+    throw PathwayError("Welch-Satterthwaite needs variances >= 0 and degrees of freedom > 0");
+  const double spread = a * a / nuA + b * b / nuB;
+  return spread > 0.0 ? (a + b) * (a + b) / spread : nuA + nuB;
+}
+
 }  // namespace pathway

@@ -36,6 +36,12 @@ double studentTTwoSidedP(double t, double nu);
 constexpr double kMaxTransformedZ = 38.5;  // beyond the quantile of every positive double (38.47)
 double studentTToNormal(double t, double nu);
 
+// Welch–Satterthwaite: the degrees of freedom of a + b, two independent variance estimates with
+// nuA and nuB degrees of freedom: (a + b)² / (a²/nuA + b²/nuB), between min(nuA, nuB) and
+// nuA + nuB. A zero estimate adds none (both zero: nuA + nuB). Throws PathwayError unless a, b >= 0
+// and nuA, nuB > 0.
+double welchDegreesOfFreedom(double a, double nuA, double b, double nuB);
+
 // P(χ²_k > x) = Q(k/2, x/2), k > 0 degrees of freedom (x <= 0 gives 1). Throws PathwayError unless
 // k > 0.
 double chiSquaredUpperTail(double x, double k);

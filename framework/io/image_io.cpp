@@ -15,6 +15,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The layer names of FilmImages::jackknife: jackknife0, jackknife1, ...
+const std::string kJackknifeLayer = "jackknife";
+
 // Writes `pixels` (channel-interleaved) to a temporary file, then renames it into place.
 void writeAtomically(const std::string& path, const RasterHeader& header, bool eightBit,
                      const void* pixels) {
@@ -71,13 +74,23 @@ void writeExr(const std::string& path, const FilmImages& images, const RenderMet
     for (const char* name : {"variance.R", "variance.G", "variance.B", "weight"})
       header.channels.push_back(name);
   }
+  for (size_t j = 0; j < images.jackknife.size(); ++j) {
+    if (images.jackknife[j].width != color.width || images.jackknife[j].height != color.height)
+      throw PathwayError(path + ": internal: jackknife image " + std::to_string(j) +
+                         " has another size");
+    for (const char* c : {".R", ".G", ".B"})
+      header.channels.push_back(kJackknifeLayer + std::to_string(j) + c);
+  }
   std::vector<float> data;
   data.reserve(color.pixels.size() * header.channels.size());
   for (size_t i = 0; i < color.pixels.size(); ++i) {
     for (int c = 0; c < 3; ++c) data.push_back(color.pixels[i][c]);
-    if (!extras) continue;
-    for (int c = 0; c < 3; ++c) data.push_back(images.variance.pixels[i][c]);
-    data.push_back(images.weight.pixels[i].x);
+    if (extras) {
+      for (int c = 0; c < 3; ++c) data.push_back(images.variance.pixels[i][c]);
+      data.push_back(images.weight.pixels[i].x);
+    }
+    for (const Image& without : images.jackknife)
+      for (int c = 0; c < 3; ++c) data.push_back(without.pixels[i][c]);
   }
   writeAtomically(path, header, false, data.data());
 }
@@ -156,6 +169,13 @@ LoadedImage readImageFile(const std::string& path) {
     const std::string layer = name.substr(0, dot);
     if (layer == "variance" || channel(layer + ".G") < 0 || channel(layer + ".B") < 0) continue;
     extract(loaded.layers[layer], {c, channel(layer + ".G"), channel(layer + ".B")});
+  }
+  // The jackknife images in order (a gap ends them).
+  for (size_t j = 0;; ++j) {
+    const auto without = loaded.layers.find(kJackknifeLayer + std::to_string(j));
+    if (without == loaded.layers.end()) break;
+    loaded.images.jackknife.push_back(std::move(without->second));
+    loaded.layers.erase(without);
   }
   loaded.metadata = readMetadataAttributes(spec.attributes, path);
   return loaded;

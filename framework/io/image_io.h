@@ -20,6 +20,9 @@ struct FilmImages {
   Image color;
   Image variance;  // of each pixel's estimate
   Image weight;    // Σ w (same in every channel)
+  // A grading render developed without each of its sample batches in turn, for its own variance
+  // (grade/jackknife_render.h); empty for any other render. Stored as layers jackknife0, ...
+  std::vector<Image> jackknife;
 };
 
 // Uncompressed (a render's noisy floats barely compress; raster.h).
