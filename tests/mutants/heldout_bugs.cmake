@@ -1,7 +1,8 @@
 # Held-out student bugs: an independent set for measuring how often the grader's likely cause is
 # right. Written from the solutions and the assignment READMEs only; each label was chosen from
 # the bug alone, before any of them was graded, and is not to be changed after seeing the
-# grader's output. tests/mutants/CMakeLists.txt builds them on demand (target
+# grader's output (two were relabelled once, with a change of policy, and say so).
+# tests/mutants/CMakeLists.txt builds them on demand (target
 # pathway_mutants_heldout), never in the suite; scripts/mutant-causes heldout tables them. A label
 # "fail:lit/indirect" accepts either cause.
 
@@ -108,8 +109,9 @@ pathway_mutant(h_s3_same_number_twice 3 stage3/stage3_ao_4d.cpp fail:occlusion
   TO "const Vec2 directionSample = Vec2(samples.next1D())")
 
 # An extra draw first: the pair moves to dimensions 4-5, no longer stratified jointly with
-# the pixel position: right on average, noisier.
-pathway_mutant(h_s3_extra_draw 3 stage3/stage3_ao_4d.cpp fail:noise
+# the pixel position: right on average, noisier. Relabelled pass (was fail:noise) when the
+# grader came to judge the expectation and not the noise (issue 32): a policy, not a tuning.
+pathway_mutant(h_s3_extra_draw 3 stage3/stage3_ao_4d.cpp pass
   "a stray next1D() before the AO pair pushes it to dimensions 4-5"
   FROM "const Vec2 directionSample = samples.next2D()"
   TO "samples.next1D()@SEMICOLON@ const Vec2 directionSample = samples.next2D()")
@@ -247,7 +249,8 @@ pathway_mutant(h_s5_fixed_normal_offset 5 stage5/stage5_path_tracing.cpp fail:in
 
 # Roulette from one bounce earlier than specified: still unbiased (divides by q), so right on
 # average; the image only differs in noise (and in which dimensions later numbers take).
-pathway_mutant(h_s5_rr_one_early 5 stage5/stage5_path_tracing.cpp fail:noise
+# Relabelled pass (was fail:noise) with the policy above: any unbiased roulette rule passes.
+pathway_mutant(h_s5_rr_one_early 5 stage5/stage5_path_tracing.cpp pass
   "roulette played from one bounce earlier: bounce + 2 >= rr-depth"
   FROM "if (bounce + 1 >= rouletteDepth_)"
   TO "if (bounce + 2 >= rouletteDepth_)")
