@@ -7,6 +7,8 @@
 // pattern that explains most of the difference beyond noise, with a penalty per fitted number,
 // and only when it explains at least half of it. A difference that nothing explains but that is
 // far above the noise is `noise`; otherwise the answer is `unknown`.
+// Three files: the candidates and their messages (diagnosis_candidates.h), the robust fit
+// (robust_fit.h), and the decision (difference_diagnosis.cpp).
 #pragma once
 
 #include <cstddef>

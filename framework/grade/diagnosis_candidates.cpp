@@ -1,0 +1,288 @@
+#include "grade/diagnosis_candidates.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace pathway {
+namespace {
+
+// Moves searched: up to kShiftSteps steps of 1/kShiftStepsPerPixel pixel each way.
+constexpr int kShiftSteps = 4;
+constexpr int kShiftStepsPerPixel = 4;
+
+// One number as printf formats it.
+std::string formatted(const char* format, double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, format, value);
+  return text;
+}
+
+// Finite differences at pixel level, clamped at the borders.
+Image derivative(const Image& r, const std::function<Color(const Image&, int, int)>& stencil) {
+  Image out(r.width, r.height);
+  for (int y = 0; y < r.height; ++y)
+    for (int x = 0; x < r.width; ++x) out.at(x, y) = stencil(r, x, y);
+  return out;
+}
+
+Color clamped(const Image& r, int x, int y) {
+  return r.at(std::clamp(x, 0, r.width - 1), std::clamp(y, 0, r.height - 1));
+}
+
+Vector tileVector(const Image& image, const std::vector<TileBounds>& tiles) {
+  Vector v;
+  v.reserve(3 * tiles.size());
+  for (const TileBounds& t : tiles) {
+    const glm::dvec3 m = tileMean(image, t);
+    v.insert(v.end(), {m.x, m.y, m.z});
+  }
+  return v;
+}
+
+}  // namespace
+
+std::string percent(double fraction) {
+  return formatted("%.1f%%", 100.0 * std::fabs(fraction));
+}
+std::string ratio(double value) {
+  return formatted("%.2f", value);
+}
+std::string signedNumber(double value) {
+  return formatted("%+.2f", value);
+}
+
+namespace {
+
+// The reference moved right by sx and down by sy pixels (bilinear, clamped at the borders).
+Image shifted(const Image& r, double sx, double sy) {
+  Image out(r.width, r.height);
+  for (int y = 0; y < r.height; ++y)
+    for (int x = 0; x < r.width; ++x) {
+      const double fx = x - sx, fy = y - sy;
+      const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
+      const float ax = static_cast<float>(fx - x0), ay = static_cast<float>(fy - y0);
+      out.at(x, y) = (1 - ay) * ((1 - ax) * clamped(r, x0, y0) + ax * clamped(r, x0 + 1, y0)) +
+                     ay * ((1 - ax) * clamped(r, x0, y0 + 1) + ax * clamped(r, x0 + 1, y0 + 1));
+    }
+  return out;
+}
+
+std::string movedBy(double sx, double sy) {
+  return "the image is moved by about (" + signedNumber(sx) + ", " + signedNumber(sy) +
+         ") pixels (right, down) against the reference: look at where a pixel's centre is and "
+         "which pixels a sample reaches";
+}
+
+std::string brighterOrDarker(double coefficient) {
+  return coefficient > 0 ? "too bright" : "too dark";
+}
+
+}  // namespace
+
+std::vector<Candidate> candidates(const DiagnosisInput& input,
+                                  const std::vector<TileBounds>& tiles) {
+  const Image& r = *input.reference;
+  std::vector<Candidate> list;
+  list.push_back({LikelyCause::Scale, {tileVector(r, tiles)}, [](const std::vector<double>& c) {
+                    return "the whole image is " + percent(c[0]) +
+                           (c[0] > 0 ? " brighter" : " darker") +
+                           " than the reference, by one factor: look for a constant that is "
+                           "missing or extra, such as 1/pi, a cosine or a pdf";
+                  }});
+  const Image laplacian = derivative(r, [](const Image& i, int x, int y) {
+    return clamped(i, x + 1, y) + clamped(i, x - 1, y) + clamped(i, x, y + 1) +
+           clamped(i, x, y - 1) - 4.0f * i.at(x, y);
+  });
+  list.push_back(
+      {LikelyCause::Edges, {tileVector(laplacian, tiles)}, [](const std::vector<double>& c) {
+         // image ≈ R + a ∇²R: a > 0 spreads each edge (blur), a < 0 steepens it.
+         return std::string("the differences sit at edges: the image is ") +
+                (c[0] > 0 ? "blurrier" : "sharper") + " than the reference there; " + kFilterHint;
+       }});
+  const Image dx = derivative(r, [](const Image& i, int x, int y) {
+    return 0.5f * (clamped(i, x + 1, y) - clamped(i, x - 1, y));
+  });
+  const Image dy = derivative(r, [](const Image& i, int x, int y) {
+    return 0.5f * (clamped(i, x, y + 1) - clamped(i, x, y - 1));
+  });
+  list.push_back({LikelyCause::Shift,
+                  {tileVector(dx, tiles), tileVector(dy, tiles)},
+                  [](const std::vector<double>& c) {
+                    // image ≈ R + a·∇R = R(p + a): the image shows what the reference shows a
+                    // further on, so it is moved by -a (to first order: it reads small moves across
+                    // hard edges short).
+                    return movedBy(-c[0], -c[1]);
+                  }});
+  // A move is searched on a grid of fractions of a pixel (a first-order fit of a gradient
+  // misreads moves across hard edges); the search costs two more fitted numbers.
+  for (int j = -kShiftSteps; j <= kShiftSteps; ++j)
+    for (int i = -kShiftSteps; i <= kShiftSteps; ++i) {
+      if (i == 0 && j == 0) continue;
+      const double sx = double(i) / kShiftStepsPerPixel, sy = double(j) / kShiftStepsPerPixel;
+      Image moved = shifted(r, sx, sy);
+      for (size_t p = 0; p < moved.pixels.size(); ++p) moved.pixels[p] -= r.pixels[p];
+      list.push_back({LikelyCause::Shift,
+                      {tileVector(moved, tiles)},
+                      [sx, sy](const std::vector<double>&) { return movedBy(sx, sy); },
+                      2,
+                      false});
+    }
+  const size_t fromImage = list.size();
+  auto layer = [&](const char* name) -> const Image* {
+    const auto it = input.patterns.find(name);
+    return it != input.patterns.end() && it->second && it->second->width == r.width &&
+                   it->second->height == r.height
+               ? it->second
+               : nullptr;
+  };
+  const Image* direct = layer(pattern::kDirect);
+  const Image* indirect = layer(pattern::kIndirect);
+  // Where a stage gathers light from the emitters: stage 5 samples them (NEE), stage 4 finds
+  // them with its branches.
+  const std::string gathering =
+      input.stage == 4
+          ? "look at the weight of a branch that reaches an emitter: the BRDF, cos theta, the "
+            "pdf, the average over the N branches"
+      : !input.nextEventEstimation
+          ? "this case runs without next-event estimation, so look at a path that hits an "
+            "emitter: the emission it adds, and the weight of the bounce that found it (BRDF, "
+            "cos theta, pdf)"
+          : "look at next-event estimation: how an emitter and a point on it are picked and "
+            "their pdf, both cosines and the distance, the shadow ray, one-sided emitters";
+  if (direct)
+    list.push_back(
+        {LikelyCause::Lit, {tileVector(*direct, tiles)}, [gathering](const std::vector<double>& c) {
+           return "the differences are where light arrives straight from the "
+                  "emitters (that light " +
+                  percent(c[0]) + " " + brighterOrDarker(c[0]) + "): " + gathering;
+         }});
+  if (direct && indirect) {
+    Image lit = *direct;
+    for (size_t p = 0; p < lit.pixels.size(); ++p) lit.pixels[p] += indirect->pixels[p];
+    list.push_back(
+        {LikelyCause::Lit, {tileVector(lit, tiles)}, [gathering](const std::vector<double>& c) {
+           return "the differences are wherever light from the emitters arrives, "
+                  "directly or after bounces (" +
+                  percent(c[0]) + " " + brighterOrDarker(c[0]) +
+                  "), but not on the emitters themselves: " + gathering;
+         }});
+  }
+  for (const auto& name : {pattern::directFrom, pattern::litFrom}) {
+    std::vector<Vector> perEmitter;
+    for (size_t k = 0; const Image* alone = layer(name(k).c_str()); ++k)
+      perEmitter.push_back(tileVector(*alone, tiles));
+    if (perEmitter.size() < 2) continue;
+    list.push_back({LikelyCause::Lit, perEmitter, [gathering](const std::vector<double>& c) {
+                      std::string factors;
+                      for (size_t k = 0; k < c.size(); ++k)
+                        factors += (k ? ", " : "") + percent(c[k]) + " " + brighterOrDarker(c[k]);
+                      return "the differences are where light from the emitters arrives, by a "
+                             "factor of each emitter's own (" +
+                             factors + "): " + gathering +
+                             "; in particular whether an emitter's pdf is that of the rule that "
+                             "picked it";
+                    }});
+  }
+  if (indirect)
+    list.push_back(
+        {LikelyCause::Indirect, {tileVector(*indirect, tiles)}, [](const std::vector<double>& c) {
+           return "the differences are in light that arrives after two or more "
+                  "bounces (" +
+                  percent(c[0]) + " " + brighterOrDarker(c[0]) +
+                  "): look at the continuation ray and its weight, Russian "
+                  "roulette's 1/q, and where paths stop";
+         }});
+  if (const Image* escaped = layer(pattern::kEscaped))
+    list.push_back(
+        {LikelyCause::Background, {tileVector(*escaped, tiles)}, [](const std::vector<double>& c) {
+           return "the differences are where camera rays leave the scene (the "
+                  "background " +
+                  percent(c[0]) + " " + brighterOrDarker(c[0]) +
+                  "): look at what a ray that hits nothing returns";
+         }});
+  if (const Image* occluded = layer(pattern::kOccluded))
+    list.push_back(
+        {LikelyCause::Occlusion, {tileVector(*occluded, tiles)}, [](const std::vector<double>& c) {
+           // image ≈ R + a (U - R): the occluded part U - R shrinks by the factor a.
+           return "the differences follow occlusion, in corners and near contacts "
+                  "(the image there is " +
+                  percent(c[0]) + (c[0] > 0 ? " less" : " more") +
+                  " occluded than it should be): look at the AO ray's length, its "
+                  "directions and their pdf, and where the ray starts";
+         }});
+  for (const auto& [name, rays] : {std::pair{pattern::kLongerRays, "twice as long"},
+                                   std::pair{pattern::kUnlimitedRays, "of any length"}})
+    if (const Image* longer = layer(name))
+      list.push_back({LikelyCause::Occlusion,
+                      {tileVector(*longer, tiles)},
+                      [rays = std::string(rays)](const std::vector<double>& c) {
+                        // image ≈ R + a (A' - R): a = 1 is AO with the longer rays.
+                        return "the differences follow occlusion: the image looks like AO with "
+                               "rays " +
+                               rays + " (fitted " + ratio(c[0]) +
+                               " of the way there): look at the AO ray's length (tMax) and how "
+                               "it is passed on";
+                      }});
+  const Image* movedRight = layer(pattern::kMovedRight);
+  const Image* movedDown = layer(pattern::kMovedDown);
+  if (movedRight && movedDown)
+    list.push_back({LikelyCause::Shift,
+                    {tileVector(*movedRight, tiles), tileVector(*movedDown, tiles)},
+                    [](const std::vector<double>& c) { return movedBy(c[0], c[1]); }});
+  if (const Image* wider = layer(pattern::kWiderFilter)) {
+    // The filter's width and, beside it, the reference's Laplacian: a profile of another shape
+    // moves light at edges as neither does alone.
+    list.push_back({LikelyCause::Edges,
+                    {tileVector(*wider, tiles), tileVector(laplacian, tiles)},
+                    [](const std::vector<double>& c) {
+                      return std::string(
+                                 "the differences sit at edges: the filter's profile "
+                                 "has another shape (") +
+                             (c[0] > 0 ? "wider" : "narrower") +
+                             " than it should be, in effect); look at the filter's formula, its "
+                             "radius, and which pixels a sample's splat reaches";
+                    }});
+    list.push_back(
+        {LikelyCause::Edges, {tileVector(*wider, tiles)}, [](const std::vector<double>& c) {
+           // 1.25 / 0.8 is e^0.446: a = 1 is a filter e^0.446 times as wide.
+           return "the differences sit at edges: the image looks as if its filter were about " +
+                  ratio(std::exp(0.446 * c[0])) + " times as wide as it should be; " + kFilterHint;
+         }});
+  }
+  // A mask's light may be off by a factor that changes across the image (a pdf that is wrong for
+  // one emitter, a cosine left out): the same mask times a smooth field, 1, u, v, u², uv, v² in
+  // image coordinates, with its price in fitted numbers.
+  const size_t rendered = list.size();
+  for (size_t i = fromImage; i < rendered; ++i) {
+    if (list[i].patterns.size() != 1 || list[i].cause == LikelyCause::Shift ||
+        list[i].cause == LikelyCause::Edges)
+      continue;
+    Candidate modulated = list[i];
+    const Vector base = modulated.patterns.front();
+    for (int term = 1; term < 6; ++term) {
+      Vector column(base.size());
+      for (size_t k = 0; k < base.size(); ++k) {
+        const TileBounds& t = tiles[k / 3];
+        const double u = (t.x0 + t.x1) / double(r.width) - 1.0;
+        const double v = (t.y0 + t.y1) / double(r.height) - 1.0;
+        const double field[6] = {1.0, u, v, u * u, u * v, v * v};
+        column[k] = base[k] * field[term];
+      }
+      modulated.patterns.push_back(std::move(column));
+    }
+    const auto explain = modulated.explain;
+    modulated.explain = [explain](const std::vector<double>& c) {
+      // The factor varies across the image: say its average (u and v run over [-1, 1], where u²
+      // and v² average 1/3 and u, v, uv 0), not its constant term, which may be near 0.
+      return explain({c[0] + (c[3] + c[5]) / 3.0}) + ", unevenly across the image";
+    };
+    list.push_back(std::move(modulated));
+  }
+  // The patterns rendered with the reference stages first: where one explains as much as a
+  // pattern read off the reference image, it says more.
+  std::rotate(list.begin(), list.begin() + static_cast<std::ptrdiff_t>(fromImage), list.end());
+  return list;
+}
+
+}  // namespace pathway
