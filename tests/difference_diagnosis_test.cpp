@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
 
 #include "sampling/pcg32.h"
 
@@ -93,10 +94,12 @@ class Diagnosis : public ::testing::Test {
     input.stage = stage;
     input.nextEventEstimation = nextEventEstimation;
     input.patterns[pattern::kDirect] = &direct_;
+    for (const auto& [name, image] : patterns_) input.patterns[name] = image;
     return diagnoseDifference(input, comparison, settings);
   }
 
   Image truth_, mean_, tileVariance_, direct_;
+  std::map<std::string, const Image*> patterns_;  // more stored patterns, by name
 };
 
 TEST_F(Diagnosis, OneFactorIsScale) {
@@ -144,6 +147,32 @@ TEST_F(Diagnosis, ExtraLightWhereTheDirectMaskIsIsLit) {
       << withoutNee.line();
   EXPECT_NE(withoutNee.explanation.find("runs without next-event estimation"), std::string::npos)
       << withoutNee.line();
+}
+
+TEST_F(Diagnosis, OcclusionSaysWhichWayAndHowFarInWordsThatAgree) {
+  // AO with rays twice as long, minus the reference: darker in a soft region of its own.
+  const Image longer = boxFiltered([](double x, double y) {
+    const double dx = x - 44.0, dy = y - 20.0;
+    return -0.4 * std::exp(-(dx * dx + dy * dy) / 100.0);
+  });
+  patterns_[pattern::kLongerRays] = &longer;
+  const auto along = [&](double a) {
+    Image image = truth_;
+    for (size_t p = 0; p < image.pixels.size(); ++p) image.pixels[p] += float(a) * longer.pixels[p];
+    return diagnose(withNoise(image, 7), 2);
+  };
+  const pathway::Diagnosis further = along(0.5);  // half of the way to rays twice as long
+  EXPECT_EQ(further.cause, LikelyCause::Occlusion) << further.line();
+  EXPECT_NE(further.explanation.find("looks like AO with rays"), std::string::npos)
+      << further.line();
+  EXPECT_NE(further.explanation.find("% of the way there"), std::string::npos) << further.line();
+  // The other way (brighter where longer rays darken): rays that stop short, never "0.00 of the
+  // way there" to longer rays.
+  const pathway::Diagnosis shorter = along(-0.5);
+  EXPECT_EQ(shorter.cause, LikelyCause::Occlusion) << shorter.line();
+  EXPECT_NE(shorter.explanation.find("the opposite way"), std::string::npos) << shorter.line();
+  EXPECT_EQ(shorter.explanation.find("of the way there"), std::string::npos) << shorter.line();
+  patterns_.erase(pattern::kLongerRays);
 }
 
 TEST_F(Diagnosis, OneBrightTileIsLocal) {

@@ -217,11 +217,19 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
       list.push_back({LikelyCause::Occlusion,
                       {tileVector(*longer, tiles)},
                       [rays = std::string(rays)](const std::vector<double>& c) {
-                        // image ≈ R + a (A' - R): a = 1 is AO with the longer rays.
+                        // image ≈ R + a (A' - R): a = 1 is AO with the longer rays, a < 0
+                        // goes the other way (rays that stop short, or start off the surface).
+                        if (c[0] < 0.0)
+                          return "the differences follow occlusion, the opposite way to AO with "
+                                 "rays " +
+                                 rays + " (" + percent(c[0]) +
+                                 " of that difference): AO rays that stop short or start too "
+                                 "far from the surface; look at the AO ray's length (tMax), its "
+                                 "start, and how they are passed on";
                         return "the differences follow occlusion: the image looks like AO with "
                                "rays " +
-                               rays + " (fitted " + ratio(c[0]) +
-                               " of the way there): look at the AO ray's length (tMax) and how "
+                               rays + ", " + percent(c[0]) +
+                               " of the way there: look at the AO ray's length (tMax) and how "
                                "it is passed on";
                       }});
   const Image* movedRight = layer(pattern::kMovedRight);
