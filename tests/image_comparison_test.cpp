@@ -292,5 +292,37 @@ TEST(ImageComparison, ANoisierValidRenderPassesByItsOwnVarianceAndABiasStillFail
       << capped.describe(settings);
 }
 
+TEST(ImageComparison, TheSmallestDetectableBiasIsCaughtAboutHalfTheTime) {
+  const Reference reference = makeReference();
+  const ComparisonSettings settings;
+  const glm::dvec3 correlation(1.0);
+  const double bias = smallestDetectableBias(reference.mean, reference.tileVariance, 8, kReplicates,
+                                             correlation, settings);
+  // The formula by hand on the first channel: z* sqrt(n) / Σ m / s over the 64 tiles.
+  const double threshold = -normalQuantile(settings.omnibusAlpha / 12.0);
+  double sum = 0.0;
+  for (const TileBounds& t : tilesOf(kSize, kSize, 8)) {
+    const double m = tileMean(reference.mean, t).x;
+    const double floor = settings.relativeFloor * m + settings.absoluteFloor;
+    sum += m / std::sqrt(reference.tileVariance.at(t.x0, t.y0).x * (1.0 + 1.0 / kReplicates) +
+                         floor * floor);
+  }
+  EXPECT_NEAR(bias, threshold * 8.0 / sum, 0.05 * bias);  // the smallest channel's, within 5 %
+  // Renders that much too bright fail the whole-image test in at least half of 100 seeds (any of
+  // three channels may: about 7 in 8 expected), renders half as biased rarely (about 7 in 100);
+  // bounds chosen at over 4 standard errors from those rates.
+  const auto failures = [&](double b) {
+    int failed = 0;
+    for (uint64_t seed = 1; seed <= 100; ++seed) {
+      Image image = noisyRender(500 + seed);
+      for (Color& c : image.pixels) c *= float(1.0 + b);
+      failed += compare(image, reference).omnibusP < settings.omnibusAlpha;
+    }
+    return failed;
+  };
+  EXPECT_GE(failures(bias), 50);
+  EXPECT_LE(failures(0.5 * bias), 20);
+}
+
 }  // namespace
 }  // namespace pathway

@@ -1,23 +1,50 @@
 // `pathway grade --list-cases`: every grading case with its scene, settings and what it is there
-// to catch. Also what `pathway cluster grade` runs to check its grade options before submitting.
+// to catch, and the smallest bias its reference lets the grader see. Also what `pathway cluster
+// grade` runs to check its grade options before submitting.
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 #include "app/grade_modes.h"
+#include "grade/grading_reference.h"
+#include "grade/image_comparison.h"
 
 namespace pathway {
 
-int listCasesMode(const GradeOptions&) {
-  std::printf("%-30s %-26s %-9s %4s %4s %7s  %s\n", "case", "scene", "filter", "spp", "tile",
-              "size", "parameters: what it is there to catch");
+namespace {
+
+// The smallest relative bias the case catches half the time ("-" without its reference here).
+std::string smallestBias(const GradingCase& c, const std::string& references) {
+  const std::string path = references + "/" + c.referenceFile();
+  if (!std::filesystem::exists(path)) return "-";
+  const GradingReference reference = readGradingReference(path);
+  const double bias =
+      smallestDetectableBias(reference.mean, reference.blockVariance, reference.record.blockSize,
+                             reference.record.replicates, reference.record.blockCorrelation);
+  char text[32];
+  std::snprintf(text, sizeof text, std::isfinite(bias) ? "%.2f%%" : "-", 100.0 * bias);
+  return text;
+}
+
+}  // namespace
+
+int listCasesMode(const GradeOptions& options) {
+  std::printf("%-30s %-26s %-9s %4s %4s %7s %6s  %s\n", "case", "scene", "filter", "spp", "tile",
+              "size", "bias", "parameters: what it is there to catch");
   for (const GradingCase& c : gradingCases()) {
     std::string params;
     for (const auto& [name, value] : c.params) params += name + "=" + value + " ";
     const std::string size = std::to_string(c.width) + "x" + std::to_string(c.height);
-    std::printf("%-30s %-26s %-9s %4u %4d %7s  %s%s%s%s\n", c.id().c_str(), c.scene.c_str(),
-                filterTypeName(c.filter).c_str(), c.spp, c.tileSize, size.c_str(), params.c_str(),
+    std::printf("%-30s %-26s %-9s %4u %4d %7s %6s  %s%s%s%s\n", c.id().c_str(), c.scene.c_str(),
+                filterTypeName(c.filter).c_str(), c.spp, c.tileSize, size.c_str(),
+                smallestBias(c, options.references).c_str(), params.c_str(),
                 c.sobol ? "(sobol) " : "", c.courseOnly ? "(course only) " : "", c.purpose.c_str());
   }
+  std::printf(
+      "bias: the smallest relative bias the same everywhere (the image times 1 + b) that "
+      "the whole-image test catches in half of the renders as noisy as the reference's "
+      "(a bias in part of the image needs more)\n");
   return 0;
 }
 

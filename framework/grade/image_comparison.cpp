@@ -373,6 +373,29 @@ glm::dvec3 replicateBlockCorrelation(const std::vector<Image>& replicates, int b
   return glm::max(variance / double(blocks.size()), glm::dvec3(1e-6));
 }
 
+double smallestDetectableBias(const Image& mean, const Image& blockVariance, int blockSize,
+                              int replicates, const glm::dvec3& blockCorrelation,
+                              const ComparisonSettings& settings) {
+  // Σ z over the blocks grows by b · Σ m / s; the test fails at |Σ z| / sqrt(n · correlation) =
+  // z* (two-sided, Bonferroni over the six omnibus tests), half the time when that is the shift.
+  const double threshold = -normalQuantile(settings.omnibusAlpha / 12.0);
+  const std::vector<TileBounds> blocks = tilesOf(mean.width, mean.height, blockSize);
+  double smallest = std::numeric_limits<double>::infinity();
+  for (int c = 0; c < 3; ++c) {
+    double shiftPerBias = 0.0;
+    for (const TileBounds& b : blocks) {
+      const double m = tileMean(mean, b)[c];
+      const double floor = settings.relativeFloor * std::fabs(m) + settings.absoluteFloor;
+      const double variance = blockVariance.at(b.x0, b.y0)[c] * (1.0 + 1.0 / replicates);
+      shiftPerBias += std::fabs(m) / std::sqrt(variance + floor * floor);
+    }
+    if (shiftPerBias > 0.0)
+      smallest = std::min(
+          smallest, threshold * std::sqrt(blocks.size() * blockCorrelation[c]) / shiftPerBias);
+  }
+  return smallest;
+}
+
 double filterPixelCorrelation(double filterRadius) {
   const double reach = std::max(1.0, 2.0 * filterRadius);
   return reach * reach;

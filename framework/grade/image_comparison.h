@@ -147,6 +147,14 @@ struct TileBounds {
 std::vector<TileBounds> tilesOf(int width, int height, int tileSize);
 glm::dvec3 tileMean(const Image& image, const TileBounds& tile);
 
+// The smallest relative bias, the same everywhere (the image times 1 + b), that the whole-image
+// mean-shift test catches in half of the renders of a stage as noisy as the reference's: from a
+// grading reference's mean and one render's block variance. Per channel, the smallest of the
+// three (any channel failing fails the case); infinity where the image is black.
+double smallestDetectableBias(const Image& mean, const Image& blockVariance, int blockSize,
+                              int replicates, const glm::dvec3& blockCorrelation,
+                              const ComparisonSettings& settings = {});
+
 // An upper bound on how much a filter of this radius (in pixels) inflates the variance of a sum
 // of pixels over the sum of their variances: the number of pixels one sample reaches.
 double filterPixelCorrelation(double filterRadius);
