@@ -5,7 +5,6 @@
 #include <limits>
 #include <sstream>
 
-#include "grade/jackknife_render.h"
 #include "grade/statistics.h"
 
 namespace pathway {
@@ -58,6 +57,19 @@ struct Unit {
   glm::dvec3 t, z, p;
 };
 
+// The render's own variance of the mean over `b`, from its jackknife images (one per left-out
+// batch, grade/jackknife_render.h): (B - 1)/B Σ_j (m_j - their average)².
+glm::dvec3 jackknifeVariance(const std::vector<Image>& jackknife, const TileBounds& b) {
+  std::vector<glm::dvec3> means;
+  glm::dvec3 sum(0.0);
+  for (const Image& image : jackknife) sum += means.emplace_back(tileMean(image, b));
+  const double count = static_cast<double>(jackknife.size());
+  const glm::dvec3 average = sum / count;
+  glm::dvec3 squares(0.0);
+  for (const glm::dvec3& m : means) squares += (m - average) * (m - average);
+  return squares * (count - 1.0) / count;
+}
+
 // The render's own noise at one tile or block, from its jackknife images (none: degrees 0).
 struct OwnVariance {
   glm::dvec3 variance{0.0};  // of this unit's mean
@@ -79,7 +91,7 @@ std::vector<OwnVariance> ownVariances(const ComparisonInput& input,
   const double batchDegrees = input.jackknife->size() - 1.0;
   for (size_t i = 0; i < units.size(); ++i) {
     const TileBounds& b = units[i];
-    own[i].variance = jackknifeVariance(*input.jackknife, b.x0, b.y0, b.x1, b.y1);
+    own[i].variance = jackknifeVariance(*input.jackknife, b);
     own[i].degreesOfFreedom = batchDegrees;
   }
   const long columns = static_cast<long>(perRow);

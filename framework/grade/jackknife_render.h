@@ -31,7 +31,4 @@ uint32_t sampleBatchCount(uint32_t spp);
 RenderResult renderWithJackknife(const RayTracer& tracer, const RenderRecipe& recipe,
                                  bool jackknife);
 
-// Var(block mean) per channel from the jackknife images over pixels [x0, x1) x [y0, y1).
-glm::dvec3 jackknifeVariance(const std::vector<Image>& jackknife, int x0, int y0, int x1, int y1);
-
 }  // namespace pathway
