@@ -746,6 +746,56 @@ def grading_edges():
     return b.build(background=(0.25, 0.3, 0.4))
 
 
+def grading_stripes():
+    """Grading scene for stage 1's filter profiles: the whole frame is stripes, so nearly every
+    pixel depends on the filter's shape (a flat region depends on nothing but the mean). 4:3
+    camera 3 m in front of four panels in the plane z = 0 (a 64 x 48 image puts 1 pixel at about
+    0.043 m). In each panel white (0.9) and dark (0.05) stripes widen geometrically from about
+    0.6 to 4.5 pixels (64 wide), so the panels sweep the frequencies where filters differ most,
+    from above the pixel rate to a few pixels per period. The stripes are sheared 4 degrees so
+    that along each stripe the edge crosses every sub-pixel phase. Upper left and lower right run
+    vertically, the other two horizontally; the panels sit at depths 0, 0.01, ... so that where
+    their sheared ends overlap, one is in front."""
+    b = GltfBuilder()
+    white = b.material("white", (0.9, 0.9, 0.9))
+    dark = b.material("dark", (0.05, 0.05, 0.05))
+    half_h = 3.0 * math.tan(0.33)  # the camera's yfov is 0.66 rad
+    half_w = half_h * 4.0 / 3.0
+    pixel = 2.0 * half_w / 64.0
+    shear = math.tan(math.radians(4.0))
+    stripes = {"white": [], "dark": []}
+    # (centre x, centre y, depth, vertical?, widening towards +s?)
+    for k, (cx, cy, vertical, widening) in enumerate(((-0.5, 0.5, True, True),
+                                                       (0.5, 0.5, False, True),
+                                                       (-0.5, -0.5, False, False),
+                                                       (0.5, -0.5, True, False))):
+        u, v = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0)) if vertical else ((0.0, 1.0, 0.0),
+                                                                     (-1.0, 0.0, 0.0))
+        across = half_w if vertical else half_h  # panel extent across and along the stripes
+        along = half_h if vertical else half_w
+        centre = (cx * half_w, cy * half_h, 0.01 * k)
+        widths, total = [], 0.0
+        while total < across + 2.0 * pixel:
+            widths.append(0.6 * pixel * 1.13 ** len(widths))
+            total += widths[-1]
+        if not widening:
+            widths.reverse()
+        s = -total / 2.0
+        for i, w in enumerate(widths):
+            t0, t1 = -along / 2.0 - pixel, along / 2.0 + pixel
+
+            def at(si, t):
+                return tuple(tidy(c) for c in add(centre, add(scale(u, si + shear * t),
+                                                               scale(v, t))))
+            stripes["white" if i % 2 == 0 else "dark"].append(
+                quad(at(s, t0), at(s + w, t0), at(s + w, t1), at(s, t1)))
+            s += w
+    b.mesh("stripes_white", *merge(*stripes["white"]), white)
+    b.mesh("stripes_dark", *merge(*stripes["dark"]), dark)
+    b.camera((0.0, 0.0, 3.0), (0.0, 0.0, -1.0), 0.66, aspect_ratio=4.0 / 3.0)
+    return b.build(background=(0.25, 0.3, 0.4))
+
+
 def grading_lights():
     """Grading scene for stages 2-5 (AO, naive recursion, path tracing with next-event
     estimation): an open room lit by a constant background (0.2, 0.25, 0.3) and three one-sided
@@ -852,6 +902,7 @@ SCENES = {
     "light_touching_wall.gltf": light_touching_wall,
     "textured_quad.gltf": textured_quad,
     "grading_edges.gltf": grading_edges,
+    "grading_stripes.gltf": grading_stripes,
     "grading_lights.gltf": grading_lights,
 }
 
@@ -918,6 +969,7 @@ def check_expectations(name, scene):
         "small_light.gltf": {"floor"},
         "white_furnace.gltf": {"sphere", "background"},
         "textured_quad.gltf": {"quad", "background"},
+        "grading_stripes.gltf": {"stripes_white", "stripes_dark"},
     }.get(name)
     if needs is not None and not seen <= needs:
         raise GltfError("%s: camera rays hit %s, expected only %s" % (name, seen, needs))

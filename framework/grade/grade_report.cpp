@@ -211,8 +211,8 @@ void writeHtmlReport(const std::string& folder, const GradeSummary& summary,
   page << "<h1>" << escapeHtml(summary.title) << "</h1>\n";
   page << "<p class=\"" << (summary.passed() ? "pass" : "fail") << "\"><b>"
        << fixed(summary.points(), 1) << " / " << fixed(summary.maxPoints(), 1) << " points</b>"
-       << " &middot; " << summary.cases.size() << " cases &middot; graded in "
-       << fixed(summary.seconds, 1) << " s</p>\n";
+       << " &middot; " << summary.cases.size() << (summary.cases.size() == 1 ? " case" : " cases")
+       << " &middot; graded in " << fixed(summary.seconds, 1) << " s</p>\n";
   for (const std::string& note : summary.notes) page << "<p>" << escapeHtml(note) << "</p>\n";
   if (!summary.sandbox.empty()) page << "<p>" << escapeHtml(summary.sandbox) << "</p>\n";
   page << "<table><tr><th>case</th><th>verdict</th><th>worst tile p</th><th>omnibus p</th>"
