@@ -5,7 +5,11 @@ unless:
   - every slide is in the DOM and every image is embedded (a data: URI that decodes to a picture);
   - the maths is typeset (MathML elements, no TeX left in the text);
   - loading the deck makes no network request (Chromium's own net log);
-  - screenshots of slides with a figure, maths, a table and a viewer screenshot are not blank.
+  - screenshots of slides with a figure, maths, a table and a viewer screenshot are not blank;
+  - nothing is cut off in the PDF: every page's content fits inside its 1280x720 page and its
+    margins, as Chromium lays out the page the PDF is printed from (print.html, the same layout
+    the PDF gets), and the PDF has one page per slide. Where pdftoppm is installed, the PDF's
+    own pages are also rendered and their bottom margin band must be blank.
 Usage: tests/slides_test.py OUT_DIR   (run from anywhere; the deck is written into OUT_DIR)
 """
 import base64
@@ -99,10 +103,95 @@ def run(arguments, **kwargs):
     return subprocess.run(arguments, capture_output=True, text=True, timeout=120, **kwargs)
 
 
+# Runs in print.html once its images are decoded: for every page box (the title, a section's
+# title page, a slide), how far its content reaches below and right of the box's content area
+# (inside the padding that is the page's margin), and its text. Written into the DOM as JSON.
+MEASURE_PAGES = """
+<script>
+window.addEventListener("load", () => {
+  const pages = document.querySelectorAll(
+      "header#title-block-header, section.level1 > h1, section.level2");
+  const report = [];
+  for (const page of pages) {
+    const box = page.getBoundingClientRect(), style = getComputedStyle(page);
+    const bottom = box.bottom - parseFloat(style.paddingBottom);
+    const right = box.right - parseFloat(style.paddingRight);
+    let lowest = box.top, rightmost = box.left;
+    for (const element of page.querySelectorAll("*")) {
+      const r = element.getBoundingClientRect();
+      if (r.width > 0 && r.height > 0) {
+        lowest = Math.max(lowest, r.bottom);
+        rightmost = Math.max(rightmost, r.right);
+      }
+    }
+    report.push({title: page.textContent.trim().split("\\n")[0].slice(0, 70),
+                 height: box.height, width: box.width,
+                 below: lowest - bottom, beyond: rightmost - right});
+  }
+  const out = document.createElement("pre");
+  out.id = "page-report";
+  out.textContent = JSON.stringify(report);
+  document.body.appendChild(out);
+});
+</script>
+"""
+
+
+def check_pages(out, pdf):
+    """Nothing cut off: every page's content inside its page and margins, one PDF page each."""
+    printed = os.path.join(out, "print.html")
+    if not os.path.exists(printed):
+        fail("scripts/slides --keep-print left no print.html to measure")
+        return
+    page = open(printed, encoding="utf-8").read()
+    measured = os.path.join(out, "print-measured.html")
+    with open(measured, "w", encoding="utf-8") as f:
+        f.write(page.replace("</body>", MEASURE_PAGES + "</body>"))
+    dom = run(CHROMIUM + ["--window-size=1280,720", "--virtual-time-budget=5000", "--dump-dom",
+                          "file://" + measured]).stdout
+    found = re.search(r'<pre id="page-report">(.*?)</pre>', dom, re.S)
+    if not found:
+        fail("the page layout could not be measured in print.html")
+        return
+    pages = json.loads(html.unescape(found.group(1)))
+    for number, entry in enumerate(pages, 1):
+        if round(entry["height"]) != 720 or round(entry["width"]) != 1280:
+            fail(f"PDF page {number} ('{entry['title']}') is {entry['width']:.0f}x"
+                 f"{entry['height']:.0f} px, not 1280x720")
+        # Half a pixel of slack for sub-pixel layout; anything more is cut off or in the margin.
+        if entry["below"] > 0.5:
+            fail(f"PDF page {number} ('{entry['title']}'): content runs {entry['below']:.0f} px "
+                 "into the bottom margin or off the page")
+        if entry["beyond"] > 0.5:
+            fail(f"PDF page {number} ('{entry['title']}'): content runs {entry['beyond']:.0f} px "
+                 "into the right margin or off the page")
+    # Chromium writes one page object per page.
+    page_objects = len(re.findall(rb"/Type\s*/Page\b", open(pdf, "rb").read()))
+    if page_objects != len(pages):
+        fail(f"the PDF has {page_objects} pages, print.html {len(pages)} page boxes")
+    print(f"{len(pages)} PDF pages measured, the lowest content "
+          f"{max(entry['below'] for entry in pages):+.0f} px from the bottom margin")
+
+    # The PDF itself, where a renderer is at hand: the bottom margin band must hold no ink.
+    if shutil.which("pdftoppm"):
+        rendered = os.path.join(out, "pages")
+        os.makedirs(rendered, exist_ok=True)
+        run(["pdftoppm", "-r", "24", "-png", pdf, os.path.join(rendered, "p")])
+        images = sorted(os.listdir(rendered))
+        if len(images) != len(pages):
+            fail(f"pdftoppm rendered {len(images)} pages, print.html has {len(pages)}")
+        for name in images:
+            grey = Image.open(os.path.join(rendered, name)).convert("L")
+            # The lowest 3/4 of the 40 px margin: 30 of 720 rows.
+            band = grey.crop((0, grey.height - grey.height * 30 // 720, grey.width, grey.height))
+            if band.getextrema()[0] < 200:
+                fail(f"PDF page {name} has ink in its bottom margin")
+
+
 def main():
     out = os.path.abspath(sys.argv[1])
     shutil.rmtree(out, ignore_errors=True)
-    built = run([os.path.join(ROOT, "scripts/slides"), "--deck", "--out", out])
+    built = run([os.path.join(ROOT, "scripts/slides"), "--deck", "--keep-print", "--out", out])
     if built.returncode != 0:
         print(built.stdout, built.stderr)
         sys.exit("FAIL: scripts/slides --deck did not build the deck")
@@ -110,6 +199,7 @@ def main():
     pdf = os.path.join(out, "lecture.pdf")
     if not os.path.getsize(pdf) > 10000 or not open(pdf, "rb").read(5) == b"%PDF-":
         fail("the PDF is missing or empty")
+    check_pages(out, pdf)
 
     # The DOM after reveal.js has run, and every network request Chromium made meanwhile.
     net_log = os.path.join(out, "net-log.json")
@@ -153,7 +243,7 @@ def main():
 
     # Screenshots of slides that show a figure, maths, a table and a viewer screenshot.
     wanted = ["Five stages, one renderer", "A pixel is an integral",
-              "Measured at equal rays and equal time", "Live: pathway view --demo nested-vs-4d",
+              "Measured at equal time", "Live: pathway view --demo nested-vs-4d",
               "The explosion, counted"]
     by_title = {title: (top, nested) for top, nested, title in parser.titles}
     for title in wanted:
