@@ -72,6 +72,27 @@ TEST(ErrorHistory, StartsAfreshOnANewJob) {
   EXPECT_DOUBLE_EQ(history.points()[0].seconds, 0.05);
 }
 
+// V and B submit a new job: the plot shows that job's series from then on, empty until its first
+// image, never the old job's (whose images the panes still show for a moment).
+TEST(ErrorHistory, ARestartShowsOnlyTheNewJobsSeries) {
+  const ReferenceImage reference = flatReference(flatFrame(1, 1, 0.1, 1.0f), 1.0f);
+  ErrorHistory history;
+  history.add(flatFrame(1, 1, 0.1, 2.0f), reference);
+  history.add(flatFrame(1, 2, 0.2, 1.5f), reference);
+  ASSERT_EQ(history.points().size(), 2u);
+  history.restart(2, "stage5@ref");  // V: split off
+  EXPECT_TRUE(history.points().empty());
+  EXPECT_EQ(history.integrator(), "stage5@ref");
+  history.add(flatFrame(1, 4, 0.4, 1.2f), reference);  // the old job's image, still shown
+  EXPECT_TRUE(history.points().empty());
+  EXPECT_EQ(history.job(), 2u);
+  history.add(flatFrame(2, 1, 0.05, 3.0f), reference);
+  ASSERT_EQ(history.points().size(), 1u);
+  history.restart(3, "stage5@ref");  // V: split on again
+  history.add(flatFrame(2, 2, 0.1, 2.0f), reference);
+  EXPECT_TRUE(history.points().empty());
+}
+
 TEST(ErrorHistory, RecordsEachNewImageInTimeOrder) {
   const ReferenceImage reference = flatReference(flatFrame(1, 1, 0.1, 1.0f), 1.0f);
   ErrorHistory history;

@@ -6,11 +6,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <thread>
 
@@ -18,10 +20,13 @@
 #include "io/image_io.h"
 #include "render/integrator_registry.h"
 #include "run_command.h"
+#include "viewer/display_image.h"
 #include "viewer/frame_grade.h"
+#include "viewer/key_queue.h"
 #include "viewer/loaded_scene.h"
 #include "viewer/panel.h"
 #include "viewer/render_worker.h"
+#include "viewer/shortcut_keys.h"
 #include "viewer/viewer_demos.h"
 #include "viewer/viewer_state.h"
 
@@ -252,6 +257,151 @@ TEST_F(ViewerWorker, GradesTheShownImageAgainstTheReference) {
   EXPECT_NE(wrong.summary.find("differs from " + reference2), std::string::npos) << wrong.summary;
 }
 
+// Key T: yours <-> the reference the other pane shows, so the two labels name the same
+// integrator (stage5@ref, not its wavefront twin stage5@fast); alone, the one the pane left.
+TEST(ViewerState, ToggleReturnsToTheReferenceTheOtherPaneShows) {
+  if (!registered("stage5@ref") || !registered("stage5@fast") || !registered("stage5"))
+    GTEST_SKIP() << "needs stage 5 yours, its reference and its wavefront version";
+  ViewerState state;
+  state.split = true;
+  state.integrator[0] = state.integrator[1] = "stage5@ref";
+  ASSERT_TRUE(toggleVariant(state, 0));
+  EXPECT_EQ(state.integrator[0], "stage5");
+  ASSERT_TRUE(toggleVariant(state, 0));
+  EXPECT_EQ(state.integrator[0], "stage5@ref");
+  EXPECT_EQ(state.integrator[0], state.integrator[1]);
+
+  state.integrator[1] = "stage5@fast";  // the right pane's reference is the one to match
+  ASSERT_TRUE(toggleVariant(state, 0));
+  ASSERT_TRUE(toggleVariant(state, 0));
+  EXPECT_EQ(state.integrator[0], "stage5@fast");
+
+  // One pane: back to the reference it left.
+  state.split = false;
+  state.integrator[0] = "stage5@ref";
+  ASSERT_TRUE(toggleVariant(state, 0));
+  ASSERT_TRUE(toggleVariant(state, 0));
+  EXPECT_EQ(state.integrator[0], "stage5@ref");
+
+  // Keys 1-5 keep the labels matching too: stage 3 beside stage3@ref is stage3@ref.
+  if (!registered("stage3@ref")) return;
+  state.split = true;
+  state.integrator[1] = "stage3@ref";
+  ASSERT_TRUE(selectStage(state, 0, 3));
+  EXPECT_EQ(state.integrator[0], "stage3@ref");
+}
+
+// A tap shorter than a frame (pressed and released between two frames) is queued by GLFW's key
+// callback and acted on once, at the next frame; at 4-10 frames/s polling lost 2 taps of 7.
+TEST(ViewerKeys, APressAndReleaseWithinOneFrameActsOnce) {
+  ViewerState state;
+  KeyQueue queue;
+  queue.onKey(GLFW_KEY_D, GLFW_PRESS, 0);
+  queue.onKey(GLFW_KEY_D, GLFW_RELEASE, 0);  // released before the frame drains the queue
+  ShortcutEffects effects = applyKeyPresses(state, queue.take());
+  EXPECT_EQ(state.display, DisplayMode::Variance);
+  effects = applyKeyPresses(state, queue.take());  // the next frame: nothing left to act on
+  EXPECT_EQ(state.display, DisplayMode::Variance);
+
+  // Seven quick taps in one slow frame: seven steps, none lost; a held key's repeats are not.
+  for (int tap = 0; tap < 7; ++tap) {
+    queue.onKey(GLFW_KEY_EQUAL, GLFW_PRESS, 0);
+    queue.onKey(GLFW_KEY_EQUAL, GLFW_REPEAT, 0);
+    queue.onKey(GLFW_KEY_EQUAL, GLFW_RELEASE, 0);
+  }
+  applyKeyPresses(state, queue.take());
+  EXPECT_EQ(state.exposure, 7.0f);
+
+  // Shift sends the pane keys to the right pane in the split view; the effects reach the viewer.
+  state.split = true;
+  queue.onKey(GLFW_KEY_V, GLFW_PRESS, 0);
+  queue.onKey(GLFW_KEY_V, GLFW_RELEASE, 0);
+  queue.onKey(GLFW_KEY_B, GLFW_PRESS, 0);
+  queue.onKey(GLFW_KEY_M, GLFW_PRESS, 0);
+  effects = applyKeyPresses(state, queue.take());
+  EXPECT_FALSE(state.split);
+  EXPECT_EQ(state.balance, Balance::EqualRays);
+  EXPECT_TRUE(effects.makeReference);
+  EXPECT_FALSE(effects.grade);
+  if (!registered("stage2") || !registered("stage3")) return;
+  state.split = true;
+  state.integrator[0] = state.integrator[1] = "stage2";
+  queue.onKey(GLFW_KEY_3, GLFW_PRESS, GLFW_MOD_SHIFT);
+  applyKeyPresses(state, queue.take());
+  EXPECT_EQ(state.integrator[0], "stage2");
+  EXPECT_EQ(state.integrator[1], "stage3");
+}
+
+// A window leaves its UI thread a core; one core is shared.
+TEST(ViewerState, RendersBesideTheUiOnOneCoreFewer) {
+  EXPECT_EQ(renderThreadsBesideUi(2), 1);
+  EXPECT_EQ(renderThreadsBesideUi(8), 7);
+  EXPECT_EQ(renderThreadsBesideUi(1), 0);  // 0: all (the one)
+}
+
+// A frame whose variance image is `variance` everywhere but one pixel (the 1 % above the scale).
+LaneFrame varianceFrame(float variance) {
+  LaneFrame frame;
+  frame.images.color = Image(10, 10);
+  frame.images.variance = Image(10, 10);
+  for (Color& pixel : frame.images.variance.pixels) pixel = Color(variance);
+  return frame;
+}
+
+// Side by side, the variance display has one colour scale for both panes: with one each, the NEE
+// pane (7.6e-8) would look as noisy as the other (0.255).
+TEST(ViewerDisplay, SplitPanesShareOneFalseColourScale) {
+  const LaneFrame quiet = varianceFrame(7.6e-8f), noisy = varianceFrame(0.255f);
+  const LaneFrame* frames[2] = {&quiet, &noisy};
+  const float top = sharedScaleTop(frames, 2, DisplayMode::Variance);
+  EXPECT_FLOAT_EQ(top, 0.255f);
+  const DisplayImage left = makeDisplayImage(quiet, DisplayMode::Variance, 0.0f, top);
+  const DisplayImage right = makeDisplayImage(noisy, DisplayMode::Variance, 0.0f, top);
+  EXPECT_FLOAT_EQ(left.scaleMax, right.scaleMax);
+  uint8_t bottom[3], full[3];
+  falseColor(0.0f, bottom);
+  falseColor(1.0f, full);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_EQ(left.rgba[c], bottom[c]) << "the quiet pane is at the bottom of the shared scale";
+    EXPECT_EQ(right.rgba[c], full[c]);
+  }
+  // Its own scale (no shared one) would have filled it: the bug this guards against.
+  const DisplayImage own = makeDisplayImage(quiet, DisplayMode::Variance, 0.0f);
+  EXPECT_FLOAT_EQ(own.scaleMax, 7.6e-8f);
+  EXPECT_EQ(sharedScaleTop(frames, 2, DisplayMode::Color), 0.0f);
+}
+
+// Each pane can have its own sampler (nested-vs-4d: independent numbers against Sobol' points)
+// and its own pixel filter (mitchell-lobes: Mitchell against box).
+TEST_F(ViewerWorker, EachPaneRendersWithItsOwnSamplerAndFilter) {
+  if (!registered("stage2@ref") || !registered("stage3@ref")) GTEST_SKIP() << "needs references";
+  ViewerState state;
+  state.split = true;
+  state.integrator[0] = "stage2@ref";
+  state.integrator[1] = "stage3@ref";
+  state.settings.sampler = SamplerType::Independent;
+  state.splitSampler = SamplerType::Sobol;
+  state.splitFilter = FilterType::MitchellNetravali;
+  state.settings.samplesPerPixel = 2;
+  WorkerJob job = makeJob(state, scene_, OrbitCamera(scene_->scene).pose(), 32, 24);
+  ASSERT_EQ(job.lanes.size(), 2u);
+  EXPECT_FALSE(job.lanes[0].sampler);
+  ASSERT_TRUE(job.lanes[1].sampler);
+  EXPECT_EQ(*job.lanes[1].sampler, SamplerType::Sobol);
+  RenderWorker worker;
+  const uint64_t id = worker.submit(job);
+  auto any = [](const LaneFrame&) { return true; };
+  const auto left = waitFor(worker, id, 0, 20.0, any), right = waitFor(worker, id, 1, 20.0, any);
+  ASSERT_TRUE(left && right);
+  EXPECT_EQ(left->settings.sampler, SamplerType::Independent);
+  EXPECT_EQ(right->settings.sampler, SamplerType::Sobol);
+  EXPECT_EQ(left->settings.filter, FilterType::Box);
+  EXPECT_EQ(right->settings.filter, FilterType::MitchellNetravali);
+  // Another sampler on the right is another job: the panes restart.
+  state.splitSampler.reset();
+  EXPECT_FALSE(makeJob(state, scene_, OrbitCamera(scene_->scene).pose(), 32, 24) == job);
+}
+
 TEST(ViewerScene, MissingFileIsAnError) {
   EXPECT_THROW(LoadedScene::load("/nowhere/scene.gltf"), PathwayError);
 }
@@ -351,6 +501,14 @@ TEST(ViewerDemos, EveryDemoIsAValidStartingPoint) {
       EXPECT_NO_THROW(right.recipe()) << demo.name;
     }
     EXPECT_FALSE(demo.shows.empty()) << demo.name;
+    EXPECT_FALSE(demo.keys.empty()) << demo.name << " says which keys drive it";
+    EXPECT_EQ(demo.keys.find('\n'), std::string::npos) << demo.name;
+    if (!demo.splitSampler.empty()) {
+      EXPECT_NO_THROW(parseSamplerType(demo.splitSampler)) << demo.name;
+    }
+    if (!demo.splitFilter.empty()) {
+      EXPECT_NO_THROW(parseFilterType(demo.splitFilter)) << demo.name;
+    }
   }
   ViewerOptions options;
   try {
@@ -361,15 +519,100 @@ TEST(ViewerDemos, EveryDemoIsAValidStartingPoint) {
   }
 }
 
+// The demos compare fairly: nested AO with independent numbers against one 4D integral over
+// Sobol' points at equal rays; path tracing without NEE (its own demo) against naive recursion.
+TEST(ViewerDemos, ComparePanesThatDifferInTheirPointOnly) {
+  ViewerOptions nested;
+  applyViewerDemo("nested-vs-4d", nested);
+  EXPECT_EQ(nested.choices.integrator, "stage2@ref");
+  EXPECT_EQ(nested.choices.sampler, "independent");
+  EXPECT_EQ(nested.splitIntegrator, "stage3@ref");
+  EXPECT_EQ(nested.splitSampler, "sobol");
+  EXPECT_EQ(nested.balance, "rays");
+  EXPECT_NE(std::find(nested.choices.params.begin(), nested.choices.params.end(), "ao-rays=4"),
+            nested.choices.params.end());
+  ViewerOptions naive;
+  applyViewerDemo("naive-vs-path", naive);
+  EXPECT_NE(std::find(naive.choices.params.begin(), naive.choices.params.end(), "nee=off"),
+            naive.choices.params.end());
+  EXPECT_EQ(naive.balance, "time");
+  ViewerOptions lobes;
+  applyViewerDemo("mitchell-lobes", lobes);
+  EXPECT_EQ(lobes.choices.filter, "mitchell");
+  EXPECT_EQ(lobes.splitIntegrator, "stage1@ref");
+  EXPECT_EQ(lobes.splitFilter, "box");
+  EXPECT_EQ(lobes.balance, "rays");
+  // Another demo after it leaves no right-pane sampler or filter behind.
+  applyViewerDemo("naive-vs-path", nested);
+  EXPECT_TRUE(nested.splitSampler.empty());
+  applyViewerDemo("naive-vs-path", lobes);
+  EXPECT_TRUE(lobes.splitFilter.empty());
+}
+
+// `--list-demos`: each demo, what it shows, its command and the keys that drive it; the command
+// line runs as printed (the keys are a shell comment) and the names stay the lines' first words.
+TEST_F(ViewerCli, ListsEachDemoWithItsKeys) {
+  const Outcome outcome = run(std::string(PATHWAY_BINARY) + " view --list-demos");
+  ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
+  for (const ViewerDemo& demo : viewerDemos()) {
+    EXPECT_NE(outcome.output.find(demo.name + " "), std::string::npos) << outcome.output;
+    EXPECT_NE(outcome.output.find(describeViewerDemo(demo) + "   # keys: " + demo.keys + "\n"),
+              std::string::npos)
+        << outcome.output;
+  }
+  EXPECT_NE(outcome.output.find("--split-sampler sobol"), std::string::npos) << outcome.output;
+  EXPECT_NE(outcome.output.find("--split-filter box"), std::string::npos) << outcome.output;
+}
+
+// Before class, --prepare-demos makes each demo's reference once; the demo then finds it (the plot
+// needs no render of its own), and only for exactly its view and spp.
+TEST_F(ViewerCli, APreparedDemoFindsItsReferenceInTheCache) {
+  if (!registered("stage5@ref")) GTEST_SKIP() << "the demos show the reference stages";
+  const std::string env =
+      "env ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 "
+      "XDG_CACHE_HOME=" +
+      path("cache") + " " + std::string(PATHWAY_BINARY);
+  const Outcome prepared = run(env + " view --prepare-demos --reference-spp 16 --width 32");
+  ASSERT_EQ(prepared.exitCode, 0) << prepared.output;
+  const fs::path folder = dir_ / "cache" / "pathway" / "references";
+  size_t images = 0;
+  for (const auto& entry : fs::directory_iterator(folder))
+    images += entry.path().extension() == ".exr";
+  size_t demosWithReference = 0;
+  for (const ViewerDemo& demo : viewerDemos()) demosWithReference += demo.makeReference;
+  EXPECT_EQ(images, demosWithReference) << prepared.output;
+
+  const std::string demo = env +
+                           " view --demo nee-small-light --headless --frames 2 --width 32 "
+                           "--screenshot " +
+                           path("demo.png");
+  const Outcome found = run(demo + " --reference-spp 16");
+  ASSERT_EQ(found.exitCode, 0) << found.output;
+  EXPECT_NE(found.output.find("error plot reference: stage5@fast, 16 spp, cached"),
+            std::string::npos)
+      << found.output;
+  // Another spp is another reference: made, not found.
+  const Outcome other = run(demo + " --reference-spp 32");
+  ASSERT_EQ(other.exitCode, 0) << other.output;
+  EXPECT_EQ(other.output.find("cached"), std::string::npos) << other.output;
+  // An entry whose key does not match (a damaged or colliding file) is a miss, made again.
+  for (const auto& entry : fs::directory_iterator(folder))
+    if (entry.path().extension() == ".key") std::ofstream(entry.path()) << "something else";
+  const Outcome damaged = run(demo + " --reference-spp 16");
+  ASSERT_EQ(damaged.exitCode, 0) << damaged.output;
+  EXPECT_EQ(damaged.output.find("cached"), std::string::npos) << damaged.output;
+}
+
 // A demo starts straight into its split view: both panes show an AO render of the Cornell box
 // (not flat), and the error plot's reference is made (small here, to keep the test short).
 TEST_F(ViewerCli, ADemoStartsIntoItsSplitView) {
   if (!registered("stage3@ref")) GTEST_SKIP() << "the demo shows the reference stages";
-  const Outcome outcome = run("env ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 " +
-                              std::string(PATHWAY_BINARY) +
-                              " view --demo nested-vs-4d --reference-spp 16 --headless --frames 10 "
-                              "--window-width 960 --window-height 540 --screenshot " +
-                              path("demo.png"));
+  const Outcome outcome =
+      run("env ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 " +
+          std::string("XDG_CACHE_HOME=") + path("cache") + " " + std::string(PATHWAY_BINARY) +
+          " view --demo nested-vs-4d --reference-spp 16 --headless --frames 10 "
+          "--window-width 960 --window-height 540 --screenshot " +
+          path("demo.png"));
   ASSERT_EQ(outcome.exitCode, 0) << outcome.output;
   const Image image = readImageFile(path("demo.png")).images.color;
   EXPECT_NE(outcome.output.find("error plot, left stage2@ref"), std::string::npos)

@@ -6,6 +6,7 @@
 
 #include "app/commands.h"
 #include "app/shared_options.h"
+#include "viewer/reference_cache.h"
 #include "viewer/viewer_app.h"
 #include "viewer/viewer_demos.h"
 
@@ -15,6 +16,7 @@ Command addViewCommand(CLI::App& app) {
   auto options = std::make_shared<ViewerOptions>();
   auto demo = std::make_shared<std::string>();
   auto listDemos = std::make_shared<bool>(false);
+  auto prepareDemos = std::make_shared<bool>(false);
   options->choices.scene = PATHWAY_DEFAULT_SCENE;
   CLI::App* view = app.add_subcommand("view", "Open the interactive viewer");
   view->footer(
@@ -33,6 +35,12 @@ Command addViewCommand(CLI::App& app) {
                    "Split view: this integrator in the right pane");
   view->add_option("--split-param", options->splitParams,
                    "Parameter name=value of the right pane's integrator (repeatable)");
+  view->add_option("--split-sampler", options->splitSampler,
+                   "Split view: the right pane's own sampler (default: the left pane's)")
+      ->check(CLI::IsMember(samplerTypeNames()));
+  view->add_option("--split-filter", options->splitFilter,
+                   "Split view: the right pane's own pixel filter (default: the left pane's)")
+      ->check(CLI::IsMember(filterTypeNames()));
   view->add_option("--balance", options->balance,
                    "Split view: 'time' (equal render time) or 'rays' (equal ray count)")
       ->capture_default_str();
@@ -75,11 +83,31 @@ Command addViewCommand(CLI::App& app) {
                    "Start a lecture demo by name: its scene, integrators, split view, balance and "
                    "display (see --list-demos)");
   view->add_flag("--list-demos", *listDemos, "List the lecture demos, then exit");
-  return {view, [options, demo, listDemos] {
+  view->add_flag("--prepare-demos", *prepareDemos,
+                 "Before class: make every demo's error-plot reference once and keep it (in "
+                 "$XDG_CACHE_HOME/pathway/references), so each demo's plot starts at once");
+  return {view, [options, demo, listDemos, prepareDemos] {
             if (*listDemos) {
               for (const ViewerDemo& d : viewerDemos())
-                std::printf("%-16s %s\n%16s pathway view %s\n", d.name.c_str(), d.shows.c_str(), "",
-                            describeViewerDemo(d).c_str());
+                // The keys as a shell comment on the command's line: the line still runs when
+                // pasted, and scripts/slides reads the demo names from the other lines.
+                std::printf("%-16s %s\n%16s pathway view %s   # keys: %s\n", d.name.c_str(),
+                            d.shows.c_str(), "", describeViewerDemo(d).c_str(), d.keys.c_str());
+              return 0;
+            }
+            if (*prepareDemos) {
+              for (const ViewerDemo& d : viewerDemos()) {
+                if (!d.makeReference) continue;
+                ViewerOptions prepared = *options;
+                applyViewerDemo(d.name, prepared);
+                prepared.headless = true;
+                prepared.frames = 1;
+                prepared.prepareReference = true;
+                std::printf("%s: ", d.name.c_str());
+                std::fflush(stdout);
+                if (const int status = runViewer(prepared); status != 0) return status;
+              }
+              std::printf("references kept in %s\n", referenceCacheFolder().string().c_str());
               return 0;
             }
             if (!demo->empty()) applyViewerDemo(*demo, *options);

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/stable_hash.h"
 #include "core/text_output.h"
 #include "io/image_io.h"
 #include "render/render_session.h"
@@ -24,19 +25,6 @@ namespace fs = std::filesystem;
 const char* const kRunsHeader =
     "label,seed,spp,seconds,primary_rays,secondary_rays,shadow_rays,samples,invalid_samples,"
     "rel_mse,mse,key";
-
-std::string hex(uint64_t value) {
-  char text[17];
-  std::snprintf(text, sizeof text, "%016" PRIx64, value);
-  return text;
-}
-
-// FNV-1a: a stable hash of a description, for file names and cache keys.
-uint64_t hashText(const std::string& text) {
-  uint64_t hash = 0xcbf29ce484222325ull;
-  for (unsigned char c : text) hash = (hash ^ c) * 0x100000001b3ull;
-  return hash;
-}
 
 // Everything of a recipe that decides the image, as text (the seed and spp are added by callers).
 std::string describeRecipe(const RenderRecipe& recipe) {
@@ -201,10 +189,11 @@ ChartData runChart(const ChartSpec& spec, const ChartRunOptions& options) {
                    const std::string& referenceKey) {
     const ChartScene& scene = scenes.at(spec.sceneOf(config));
     std::ostringstream text;
-    text << "scene " << hex(scene.tracer->sceneHash()) << " " << scene.width << "x" << scene.height
-         << " " << describeRecipe(recipe) << " spp " << recipe.settings.samplesPerPixel << " seed "
-         << recipe.settings.seed << " reference " << referenceKey;
-    return hex(hashText(text.str()));
+    text << "scene " << hexDigits(scene.tracer->sceneHash()) << " " << scene.width << "x"
+         << scene.height << " " << describeRecipe(recipe) << " spp "
+         << recipe.settings.samplesPerPixel << " seed " << recipe.settings.seed << " reference "
+         << referenceKey;
+    return hexDigits(stableHash(text.str()));
   };
 
   ChartData data;

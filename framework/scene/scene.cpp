@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/stable_hash.h"
+
 namespace pathway {
 
 Color Texture::lookup(Vec2 uv) const {
@@ -24,30 +26,8 @@ Color Texture::lookup(Vec2 uv) const {
          ty * ((1 - tx) * texel(ix, iy + 1) + tx * texel(ix + 1, iy + 1));
 }
 
-namespace {
-
-// FNV-1a over raw bytes: small, and stable across runs and machines of one endianness.
-class ByteHash {
- public:
-  template <typename T>
-  void add(const T* data, size_t count) {
-    const auto* bytes = reinterpret_cast<const unsigned char*>(data);
-    for (size_t i = 0; i < count * sizeof(T); ++i) value_ = (value_ ^ bytes[i]) * 0x100000001b3ull;
-  }
-  template <typename T>
-  void add(const T& value) {
-    add(&value, 1);
-  }
-  uint64_t value() const { return value_; }
-
- private:
-  uint64_t value_ = 0xcbf29ce484222325ull;
-};
-
-}  // namespace
-
 uint64_t Scene::contentHash() const {
-  ByteHash hash;
+  StableHash hash;
   for (const Mesh& mesh : meshes) {
     hash.add(mesh.positions.data(), mesh.positions.size());
     hash.add(mesh.triangles.data(), mesh.triangles.size());

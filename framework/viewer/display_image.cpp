@@ -40,13 +40,29 @@ float scaleTop(std::vector<float> values) {
   return values[k];
 }
 
-void falseColorImage(DisplayImage& out, const std::vector<float>& values) {
-  out.scaleMax = scaleTop(values);
+void falseColorImage(DisplayImage& out, const std::vector<float>& values, float scaleMax) {
+  out.scaleMax = scaleMax > 0.0f ? scaleMax : scaleTop(values);
   const float inverse = out.scaleMax > 0.0f ? 1.0f / out.scaleMax : 0.0f;
   for (size_t i = 0; i < values.size(); ++i) {
     falseColor(std::isfinite(values[i]) ? values[i] * inverse : 1.0f, &out.rgba[4 * i]);
     out.rgba[4 * i + 3] = 255;
   }
+}
+
+// The values a false-colour mode shows, per pixel; empty when the frame has none.
+std::vector<float> falseColorValues(const LaneFrame& frame, DisplayMode mode) {
+  const size_t count = frame.images.color.pixels.size();
+  std::vector<float> values;
+  if (mode == DisplayMode::Variance && frame.images.variance.pixels.size() == count) {
+    values.resize(count);
+    for (size_t i = 0; i < count; ++i) {
+      const Color& v = frame.images.variance.pixels[i];
+      values[i] = (v.x + v.y + v.z) / 3.0f;
+    }
+  } else if (mode == DisplayMode::RayHeatmap && frame.raysPerSample.size() == count) {
+    values = frame.raysPerSample;
+  }
+  return values;
 }
 
 }  // namespace
@@ -73,7 +89,8 @@ DisplayImage displayImageOf(const Image& image) {
   return out;
 }
 
-DisplayImage makeDisplayImage(const LaneFrame& frame, DisplayMode mode, float exposure) {
+DisplayImage makeDisplayImage(const LaneFrame& frame, DisplayMode mode, float exposure,
+                              float scaleMax) {
   DisplayImage out;
   const Image& color = frame.images.color;
   out.width = color.width;
@@ -86,17 +103,23 @@ DisplayImage makeDisplayImage(const LaneFrame& frame, DisplayMode mode, float ex
     const float scale = std::exp2(exposure);
     for (size_t i = 0; i < count; ++i)
       for (int c = 0; c < 3; ++c) out.rgba[4 * i + c] = encode(color.pixels[i][c] * scale);
-  } else if (mode == DisplayMode::Variance && frame.images.variance.pixels.size() == count) {
-    std::vector<float> values(count);
-    for (size_t i = 0; i < count; ++i) {
-      const Color& v = frame.images.variance.pixels[i];
-      values[i] = (v.x + v.y + v.z) / 3.0f;
-    }
-    falseColorImage(out, values);
-  } else if (mode == DisplayMode::RayHeatmap && frame.raysPerSample.size() == count) {
-    falseColorImage(out, frame.raysPerSample);
+  } else {
+    const std::vector<float> values = falseColorValues(frame, mode);
+    if (values.size() == count) falseColorImage(out, values, scaleMax);
   }
   return out;
+}
+
+float displayScaleTop(const LaneFrame& frame, DisplayMode mode) {
+  if (mode == DisplayMode::Color) return 0.0f;
+  return scaleTop(falseColorValues(frame, mode));
+}
+
+float sharedScaleTop(const LaneFrame* const* frames, int count, DisplayMode mode) {
+  float top = 0.0f;
+  for (int i = 0; i < count; ++i)
+    if (frames[i]) top = std::max(top, displayScaleTop(*frames[i], mode));
+  return top;
 }
 
 }  // namespace pathway

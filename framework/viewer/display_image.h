@@ -19,8 +19,18 @@ struct DisplayImage {
   float scaleMax = 0.0f;      // variance / rays per sample shown at the top of the colour scale
 };
 
-// `exposure` in stops, for the colour mode.
-DisplayImage makeDisplayImage(const LaneFrame& frame, DisplayMode mode, float exposure);
+// `exposure` in stops, for the colour mode. The false-colour modes scale to `scaleMax` when it is
+// above 0 (one scale shared by the panes of a split view), else to the frame's own range.
+DisplayImage makeDisplayImage(const LaneFrame& frame, DisplayMode mode, float exposure,
+                              float scaleMax = 0.0f);
+
+// The top of a false-colour mode's scale for this frame alone (0 for colour, or nothing to show).
+float displayScaleTop(const LaneFrame& frame, DisplayMode mode);
+
+// One scale for panes shown side by side: the larger of their own tops, so the noisier pane fills
+// the scale and the other shows how much less noise it has (two own scales would make both look
+// alike). Null frames are skipped.
+float sharedScaleTop(const LaneFrame* const* frames, int count, DisplayMode mode);
 
 // Any linear RGB image (e.g. the grader's heatmap), sRGB-encoded, opaque.
 DisplayImage displayImageOf(const Image& image);

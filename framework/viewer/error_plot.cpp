@@ -7,6 +7,7 @@
 namespace pathway {
 
 void ErrorHistory::add(const LaneFrame& frame, const ReferenceImage& reference) {
+  if (frame.job < job_) return;  // an image of a job since replaced
   if (frame.job != job_) {
     clear();
     job_ = frame.job;
@@ -25,6 +26,12 @@ void ErrorHistory::add(const LaneFrame& frame, const ReferenceImage& reference) 
 void ErrorHistory::clear() {
   points_.clear();
   message_.clear();
+}
+
+void ErrorHistory::restart(uint64_t job, const std::string& integrator) {
+  clear();
+  job_ = job;
+  integrator_ = integrator;
 }
 
 double LogAxis::position(double value) const {

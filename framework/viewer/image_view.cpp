@@ -43,13 +43,17 @@ float textBox(ImDrawList* draw, ImVec2 anchor, const std::vector<std::string>& l
   return height;
 }
 
-std::string describe(const LaneFrame& frame) {
+std::string describe(const LaneFrame& frame, bool detailed) {
   std::string text = frame.integrator;
   for (const IntegratorInfo* info : allIntegrators())
     if (info->name == frame.integrator)
       text += info->variant == Variant::Student ? "  (yours)" : "  (reference)";
   if (!frame.params.specs().empty()) text += "  " + frame.params.describe();
   if (frame.earlierStages == EarlierStages::Reference) text += "  (stages before: reference)";
+  if (detailed)  // the panes may differ in sampler or filter alone (--split-sampler,
+                 // --split-filter)
+    text += "  sampler " + setting::kSampler.format(static_cast<double>(frame.settings.sampler)) +
+            "  filter " + setting::kFilter.format(static_cast<double>(frame.settings.filter));
   return text;
 }
 
@@ -60,7 +64,7 @@ std::vector<std::string> counters(const LaneFrame& frame, bool detailed) {
   std::snprintf(line, sizeof line, "%u/%u spp   %.2f s   %.1f M rays/s", s.samplesPerPixel,
                 frame.settings.samplesPerPixel, s.seconds,
                 s.seconds > 0 ? c.totalRays() / s.seconds * 1e-6 : 0.0);
-  std::vector<std::string> lines = {describe(frame), line};
+  std::vector<std::string> lines = {describe(frame, detailed), line};
   if (detailed) {
     std::snprintf(line, sizeof line, "rays: %.2f M primary, %.2f M secondary, %.2f M shadow",
                   c.primary * 1e-6, c.secondary * 1e-6, c.shadow * 1e-6);
@@ -116,20 +120,19 @@ void drawPaneContent(ImDrawList* draw, const Pane& pane, const GlTexture& textur
     textBox(draw, corner, {"rendering the first image..."}, kBoxColor, width);
     return;
   }
-  float y = corner.y;
-  if (info.side)
-    y += textBox(draw, corner, {std::string(info.side) + " pane"}, kBoxColor, width) + 4;
+  struct Box {
+    std::vector<std::string> lines;
+    ImU32 color;
+  };
+  std::vector<Box> boxes;  // top to bottom
+  if (info.side) boxes.push_back({{std::string(info.side) + " pane"}, kBoxColor});
   if (!frame->error.empty()) {
-    textBox(draw, ImVec2(corner.x, y), {frame->integrator + " cannot render:", frame->error},
-            kErrorBox, width);
-    return;
+    boxes.push_back({{frame->integrator + " cannot render:", frame->error}, kErrorBox});
+  } else {
+    boxes.push_back({counters(*frame, info.side != nullptr), kBoxColor});
+    if (!info.gradeLines.empty())
+      boxes.push_back({info.gradeLines, info.gradePassed ? kGradePass : kErrorBox});
   }
-  y +=
-      textBox(draw, ImVec2(corner.x, y), counters(*frame, info.side != nullptr), kBoxColor, width) +
-      4;
-  if (!info.gradeLines.empty())
-    textBox(draw, ImVec2(corner.x, y), info.gradeLines, info.gradePassed ? kGradePass : kErrorBox,
-            width);
 
   // Unfinished stage code: impossible to miss, with the file and line to open.
   std::vector<std::string> todos;
@@ -143,7 +146,18 @@ void drawPaneContent(ImDrawList* draw, const Pane& pane, const GlTexture& textur
                     todo.task);
   }
   const float legendRoom = info.mode == DisplayMode::Color ? 0.0f : 60.0f;
-  textBox(draw, ImVec2(corner.x, pane.max.y - margin - legendRoom), todos, kTodoBox, width, true);
+  float bottom = pane.max.y - margin - legendRoom;
+  bottom -= textBox(draw, ImVec2(corner.x, bottom), todos, kTodoBox, width, true) + 4;
+  if (info.side) {
+    // Split panes are narrow: at the top their boxes would cover the ceiling and its light (the
+    // demos' Cornell box), so they stack up from the bottom.
+    for (auto box = boxes.rbegin(); box != boxes.rend(); ++box)
+      bottom -= textBox(draw, ImVec2(corner.x, bottom), box->lines, box->color, width, true) + 4;
+  } else {
+    float y = corner.y;
+    for (const Box& box : boxes)
+      y += textBox(draw, ImVec2(corner.x, y), box.lines, box.color, width) + 4;
+  }
   if (info.mode != DisplayMode::Color) legend(draw, pane, info);
 }
 

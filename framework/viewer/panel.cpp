@@ -93,6 +93,14 @@ void samplingWidgets(ViewerState& state, const PanelStatus& status) {
   optionWidget("filter radius", setting::kFilterRadius, settings.filterRadius,
                settings.filterRadius > 0.0f ? "%.2f px" : "natural");
   optionWidget("sampler", setting::kSampler, settings.sampler);
+  if (state.split && state.splitSampler) {
+    optionWidget("right sampler", setting::kSampler, *state.splitSampler);
+    tooltip("The right pane's own sampler (--split-sampler); 'sampler' above is the left pane's.");
+  }
+  if (state.split && state.splitFilter) {
+    optionWidget("right filter", setting::kFilter, *state.splitFilter);
+    tooltip("The right pane's own pixel filter (--split-filter); 'filter' above is the left's.");
+  }
   // Typed, not dragged: a seed is a name for a stream of numbers, not a quantity (and 64 bits do
   // not fit the double a slider holds).
   ImGui::InputScalar("seed", ImGuiDataType_U64, &settings.seed);

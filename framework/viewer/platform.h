@@ -3,8 +3,10 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "viewer/gl_functions.h"
+#include "viewer/key_queue.h"
 
 struct ImDrawData;
 
@@ -25,6 +27,8 @@ class Platform {
   virtual void waitEvents(double timeoutSeconds) = 0;
   virtual void wake() = 0;      // any thread
   virtual void newFrame() = 0;  // before ImGui::NewFrame
+  // Every key pressed since the last call, however briefly (an offscreen context has none).
+  virtual std::vector<KeyPress> takeKeyPresses() { return {}; }
   virtual void renderDrawData(ImDrawData* data) = 0;
   virtual void present() = 0;
   virtual void framebufferSize(int& width, int& height) const = 0;

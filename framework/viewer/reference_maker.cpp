@@ -4,6 +4,7 @@
 #include <chrono>
 #include <exception>
 
+#include "viewer/render_priority.h"
 #include "viewer/stage_reference.h"
 
 namespace pathway {
@@ -20,7 +21,7 @@ ReferenceMaker::~ReferenceMaker() {
 }
 
 void ReferenceMaker::start(std::shared_ptr<const LaneFrame> frame,
-                           std::shared_ptr<const LoadedScene> scene, uint32_t spp) {
+                           std::shared_ptr<const LoadedScene> scene, uint32_t spp, bool belowUi) {
   cancel();
   error_.clear();
   sppTarget_ = spp;
@@ -33,7 +34,8 @@ void ReferenceMaker::start(std::shared_ptr<const LaneFrame> frame,
   if (!error_.empty()) return;
   progress_ = std::make_shared<Progress>();
   auto progress = progress_;
-  result_ = std::async(std::launch::async, [frame, scene, spp, progress] {
+  result_ = std::async(std::launch::async, [frame, scene, spp, progress, belowUi] {
+    if (belowUi) lowerThisThreadsPriority();  // a thread of its own: it ends with the render
     Outcome outcome;
     try {
       const uint32_t perPass = std::max(1u, spp / kPassesForProgress);

@@ -25,8 +25,9 @@ class ReferenceMaker {
 
   // Starts (cancelling a reference still rendering) for `frame`, at `spp` samples per pixel. A
   // stage without a built-in reference does not start: error() says so.
+  // `belowUi`: render at a lower priority than the UI thread (render_priority.h).
   void start(std::shared_ptr<const LaneFrame> frame, std::shared_ptr<const LoadedScene> scene,
-             uint32_t spp);
+             uint32_t spp, bool belowUi = false);
   void cancel();
   bool running() const { return result_.valid(); }
   // The finished reference, once; nothing while it renders, after a failure or a cancel.

@@ -8,6 +8,7 @@
 #include "render/integrator_registry.h"
 #include "render/recipe_builder.h"
 #include "scene/camera.h"
+#include "viewer/render_priority.h"
 
 namespace pathway {
 namespace {
@@ -33,8 +34,11 @@ struct RenderWorker::Lane {
   Clock::time_point lastPublish;
 };
 
-RenderWorker::RenderWorker(std::function<void()> onPublish)
-    : onPublish_(std::move(onPublish)), thread_([this] { run(); }) {}
+RenderWorker::RenderWorker(std::function<void()> onPublish, bool belowUi)
+    : onPublish_(std::move(onPublish)), belowUi_(belowUi), thread_([this] {
+        if (belowUi_) lowerThisThreadsPriority();
+        run();
+      }) {}
 
 RenderWorker::~RenderWorker() {
   {
@@ -135,8 +139,10 @@ void RenderWorker::start(WorkerJob job, uint64_t id, Clock::time_point submitted
       RecipeBuilder builder(laneJob.integrator);
       // The panel's widgets only produce values the parameters accept; anything else is refused.
       for (const auto& [name, value] : laneJob.params) builder.param(name, value);
-      const RenderRecipe& recipe =
-          builder.earlierStages(laneJob.earlierStages).settings(job.settings);
+      RenderSettings settings = job.settings;
+      if (laneJob.sampler) settings.sampler = *laneJob.sampler;
+      if (laneJob.filter) settings.filter = *laneJob.filter;
+      const RenderRecipe& recipe = builder.earlierStages(laneJob.earlierStages).settings(settings);
       const CameraPose& pose = job.camera;
       const Camera camera(pose.position, pose.lookAt, pose.up, pose.yfov, recipe.settings.width,
                           recipe.settings.height);

@@ -34,9 +34,13 @@ struct LaneJob {
   std::string integrator;                // registry name, "stage2" or "stage2@ref"
   std::map<std::string, double> params;  // by name; missing ones take their declared default
   EarlierStages earlierStages = EarlierStages::Own;
+  // This lane's own sampler and pixel filter; none: the job's settings'.
+  std::optional<SamplerType> sampler = std::nullopt;
+  std::optional<FilterType> filter = std::nullopt;
 
   bool operator==(const LaneJob& o) const {
-    return integrator == o.integrator && params == o.params && earlierStages == o.earlierStages;
+    return integrator == o.integrator && params == o.params && earlierStages == o.earlierStages &&
+           sampler == o.sampler && filter == o.filter;
   }
 };
 
@@ -77,7 +81,8 @@ struct LaneFrame {
 class RenderWorker {
  public:
   // `onPublish` runs on the worker thread after each new frame (e.g. to wake the UI's event loop).
-  explicit RenderWorker(std::function<void()> onPublish = {});
+  // `belowUi`: render at a lower priority than the UI thread (render_priority.h).
+  explicit RenderWorker(std::function<void()> onPublish = {}, bool belowUi = false);
   ~RenderWorker();
   RenderWorker(const RenderWorker&) = delete;
   RenderWorker& operator=(const RenderWorker&) = delete;
@@ -106,6 +111,7 @@ class RenderWorker {
   void publishPending();
 
   std::function<void()> onPublish_;
+  bool belowUi_ = false;
   std::atomic<bool> cancel_{false};
   std::atomic<bool> idle_{true};
   std::atomic<uint64_t> passes_{0};

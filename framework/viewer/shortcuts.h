@@ -1,19 +1,17 @@
-// Keyboard shortcuts: one table, read by the handler and by the help overlay (H or F1).
+// Keyboard shortcuts: the frame's handler (the queued presses, acted on as shortcut_keys.h says)
+// and the help overlay listing them (H or F1).
 #pragma once
 
+#include <vector>
+
+#include "viewer/shortcut_keys.h"
 #include "viewer/viewer_state.h"
 
 namespace pathway {
 
-struct ShortcutEffects {
-  bool resetCamera = false;
-  bool screenshot = false;
-  bool grade = false;          // grade the left pane's image against the reference (again: hide it)
-  bool makeReference = false;  // make the error plot's reference (again: cancel it)
-};
-
-// Applies the keys pressed this frame (unless a text field has the keyboard).
-ShortcutEffects handleShortcuts(ViewerState& state);
+// Applies the keys pressed since the last frame (key_queue.h), unless a text field has the
+// keyboard: then they were typed into it.
+ShortcutEffects handleShortcuts(ViewerState& state, const std::vector<KeyPress>& presses);
 // The help overlay, centred over the whole window; closes with H, F1, Esc or its button.
 void drawHelp(ViewerState& state);
 

@@ -2,16 +2,29 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 
 #include "core/error.h"
 #include "viewer/frame_metadata.h"
+#include "viewer/reference_cache.h"
 #include "viewer/shortcuts.h"
 #include "viewer/stage_reference.h"
 
 namespace pathway {
 namespace {
+
+// A path under the working folder as one would type it there ("scenes/cornell_box.gltf"), so the
+// Scene field (and a screenshot of it) shows no machine's folders; others stay as they are.
+std::string pathAsTyped(const std::string& path) {
+  std::error_code error;
+  const std::filesystem::path relative =
+      std::filesystem::path(path).lexically_proximate(std::filesystem::current_path(error));
+  if (error || relative.empty() || *relative.begin() == "..") return path;
+  return relative.string();
+}
 
 double now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
@@ -48,10 +61,11 @@ Viewer::Viewer(std::unique_ptr<Platform> platform, ViewerState state,
   gradeTexture_ = std::make_unique<GlTexture>(platform_->gl());
   if (scene_) {
     camera_ = OrbitCamera(scene_->scene);
-    text_.sceneInput = scene_->scene.sourcePath;
+    text_.sceneInput = pathAsTyped(scene_->scene.sourcePath);
   }
   Platform* wakePlatform = platform_.get();
-  worker_ = std::make_unique<RenderWorker>([wakePlatform] { wakePlatform->wake(); });
+  worker_ = std::make_unique<RenderWorker>([wakePlatform] { wakePlatform->wake(); },
+                                           state_.renderBelowUi);
   fpsWindowStart_ = now();
 }
 
@@ -84,7 +98,12 @@ void Viewer::submitIfChanged(const ImageLayout& layout) {
   WorkerJob job = makeJob(state_, scene_, camera_.pose(), layout.renderWidth, layout.renderHeight);
   if (submitted_ && *submitted_ == job) return;
   submitted_ = job;
+  std::string integrators[2];
+  for (size_t lane = 0; lane < job.lanes.size() && lane < 2; ++lane)
+    integrators[lane] = job.lanes[lane].integrator;
   jobId_ = worker_->submit(std::move(job));
+  // The plot follows the panes now asked for: V or B must not leave the old job's series up.
+  for (int lane = 0; lane < 2; ++lane) errors_[lane].restart(jobId_, integrators[lane]);
 }
 
 bool Viewer::panesCurrent() const {
@@ -95,17 +114,33 @@ bool Viewer::panesCurrent() const {
   return jobId_ != 0;
 }
 
-void Viewer::updateTextures() {
+float Viewer::sharedScale(const std::shared_ptr<const LaneFrame>* frames) {
+  // Side by side, the false-colour modes share one scale: with one each, a pane with 1e-7 times
+  // the other's variance would look just as noisy.
+  if (!state_.split || state_.display == DisplayMode::Color) return 0.0f;
   for (int lane = 0; lane < 2; ++lane) {
-    std::shared_ptr<const LaneFrame> frame = worker_->frame(lane);
+    if (frames[lane] == topOf_[lane] && topMode_[lane] == state_.display) continue;
+    ownTop_[lane] = frames[lane] ? displayScaleTop(*frames[lane], state_.display) : 0.0f;
+    topOf_[lane] = frames[lane];
+    topMode_[lane] = state_.display;
+  }
+  return std::max(ownTop_[0], ownTop_[1]);
+}
+
+void Viewer::updateTextures() {
+  const std::shared_ptr<const LaneFrame> frames[2] = {worker_->frame(0), worker_->frame(1)};
+  const float scale = sharedScale(frames);
+  for (int lane = 0; lane < 2; ++lane) {
+    const std::shared_ptr<const LaneFrame>& frame = frames[lane];
+    // Uploaded only when something shown changed: an upload costs the UI thread milliseconds.
     const bool stale = frame != shown_[lane] || shownMode_[lane] != state_.display ||
-                       shownExposure_[lane] != state_.exposure;
+                       shownExposure_[lane] != state_.exposure || shownScale_[lane] != scale;
     if (!frame || !stale) {
       shown_[lane] = frame;
       continue;
     }
     if (!frame->images.color.pixels.empty()) {
-      const DisplayImage image = makeDisplayImage(*frame, state_.display, state_.exposure);
+      const DisplayImage image = makeDisplayImage(*frame, state_.display, state_.exposure, scale);
       textures_[lane]->upload(image);
       scaleMax_[lane] = image.scaleMax;
       if (frame != shown_[lane]) ++imagesShown_;
@@ -113,6 +148,7 @@ void Viewer::updateTextures() {
     shown_[lane] = frame;
     shownMode_[lane] = state_.display;
     shownExposure_[lane] = state_.exposure;
+    shownScale_[lane] = scale;
   }
 }
 
@@ -157,14 +193,32 @@ void Viewer::toggleMakeReference() {
     return;
   }
   const std::shared_ptr<const LaneFrame> frame = worker_->frame(0);  // the view the panes show
-  if (frame && scene_) maker_.start(frame, scene_, state_.referenceSpp);
+  if (!frame || !scene_) return;
+  if (state_.cacheReferences && frame->error.empty())
+    if (std::optional<ReferenceImage> cached =
+            loadCachedReference(referenceCacheFolder(), *frame, *scene_, state_.referenceSpp)) {
+      setReference(std::move(*cached));
+      return;
+    }
+  referenceFor_ = frame;
+  maker_.start(frame, scene_, state_.referenceSpp, state_.renderBelowUi);
 }
 
 // Measures each pane's new image against the reference, on the UI thread: imageError takes less
 // than making the display image of the same frame (measured: 0.6 ms against 1.8 ms at 512 x 512,
 // 9 ms against 12 ms at 1540 x 1000).
 void Viewer::updateErrors() {
-  if (std::optional<ReferenceImage> made = maker_.take()) setReference(std::move(*made));
+  if (std::optional<ReferenceImage> made = maker_.take()) {
+    if (state_.cacheReferences && referenceFor_) {
+      try {
+        storeCachedReference(referenceCacheFolder(), *referenceFor_, *scene_, maker_.sppTarget(),
+                             *made);
+      } catch (const PathwayError& error) {  // the plot works without: say so, and go on
+        std::fprintf(stderr, "pathway view: the reference is not kept: %s\n", error.what());
+      }
+    }
+    setReference(std::move(*made));
+  }
   if (!reference_) return;
   for (int lane = 0; lane < (state_.split ? 2 : 1); ++lane) {
     if (!shown_[lane] || shown_[lane] == measured_[lane]) continue;
@@ -206,7 +260,9 @@ void Viewer::frame(const std::string& screenshotPath) {
   noteInput();
   pollSceneLoad();
 
-  const ShortcutEffects keys = handleShortcuts(state_);
+  const std::vector<KeyPress> presses = platform_->takeKeyPresses();
+  if (!presses.empty()) lastInput_ = now();
+  const ShortcutEffects keys = handleShortcuts(state_, presses);
   if (keys.resetCamera) camera_.reset();
   if (keys.grade) toggleGrade();
   if (keys.makeReference) toggleMakeReference();

@@ -52,11 +52,14 @@ class Viewer {
   void toggleMakeReference();
   bool makingReference() const { return maker_.running(); }
   bool hasReference() const { return reference_.has_value(); }
+  std::string referenceSource() const { return reference_ ? reference_->source : ""; }
   const ErrorHistory& errors(int lane) const { return errors_[lane]; }
 
  private:
   void pollSceneLoad();
   void submitIfChanged(const ImageLayout& layout);
+  // The split view's one false-colour scale for these frames (0: each pane its own).
+  float sharedScale(const std::shared_ptr<const LaneFrame>* frames);
   void updateTextures();
   void saveImages(const std::string& extension);
   void pollGrade();
@@ -75,6 +78,7 @@ class Viewer {
   std::future<FrameGrade> grading_;
   std::optional<FrameGrade> grade_;  // shown while its frame's job is the left pane's
   ReferenceMaker maker_;
+  std::shared_ptr<const LaneFrame> referenceFor_;  // the view maker_ renders, to cache it by
   std::optional<ReferenceImage> reference_;
   ErrorHistory errors_[2];
   std::shared_ptr<const LaneFrame> measured_[2];  // the newest image each history has seen
@@ -82,6 +86,11 @@ class Viewer {
   DisplayMode shownMode_[2] = {DisplayMode::Color, DisplayMode::Color};
   float shownExposure_[2] = {0.0f, 0.0f};
   float scaleMax_[2] = {0.0f, 0.0f};
+  float shownScale_[2] = {0.0f, 0.0f};  // the shared scale each texture was made with (0: own)
+  // Each pane's own false-colour top, for the frame and mode it was computed for.
+  std::shared_ptr<const LaneFrame> topOf_[2];
+  DisplayMode topMode_[2] = {DisplayMode::Color, DisplayMode::Color};
+  float ownTop_[2] = {0.0f, 0.0f};
   std::unique_ptr<RenderWorker> worker_;
   std::optional<WorkerJob> submitted_;
   uint64_t jobId_ = 0;

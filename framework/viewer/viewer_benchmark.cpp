@@ -1,11 +1,16 @@
 // `pathway view --benchmark`: how fast the progressive display is, measured headless (OSMesa) on
 // the real viewer, and the render worker alone for comparison. Prints one row per integrator.
+// Then how many frames the UI draws while the panes render, as when someone drags a slider: in a
+// window when there is a display (e.g. under xvfb-run), rendering on every core and on one fewer.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <thread>
 
 #include "render/integrator_registry.h"
 #include "viewer/viewer_app.h"
+#include "viewer/viewer_demos.h"
 
 namespace pathway {
 namespace {
@@ -82,6 +87,57 @@ Figures measureWorker(const ViewerOptions& options, std::shared_ptr<const Loaded
   return f;
 }
 
+struct UiFigures {
+  double framesPerSecond = 0.0;
+  double worstFrameMs = 0.0;  // the longest gap between two frames: a tap shorter than it is lost
+  double megaRaysPerSecond = 0.0;
+};
+
+bool hasDisplay() {
+  const char* display = std::getenv("DISPLAY");
+  return display && *display;
+}
+
+// Draws frames back to back, at most 60 a second (a display's rate), while the panes render with
+// the render threads on every core at the UI's priority, or as a window has them (`belowUi`:
+// render_priority.h), and counts them. Options without a render size give
+// the window's size to the panes, as `pathway view` does.
+UiFigures measureUi(const ViewerOptions& options, std::shared_ptr<const LoadedScene> scene,
+                    bool window, bool belowUi) {
+  UiFigures f;
+  ViewerState state = initialState(options);
+  state.renderBelowUi = belowUi;
+  const bool fixed = options.width > 0;
+  const int windowWidth =
+      fixed ? static_cast<int>(kPanelWidth) + options.width : options.windowWidth;
+  const int windowHeight = fixed ? std::max(options.height, 600) : options.windowHeight;
+  Viewer viewer(window ? createGlfwPlatform(windowWidth, windowHeight, "Pathway benchmark")
+                       : createOsmesaPlatform(windowWidth, windowHeight),
+                std::move(state), scene);
+  const double start = now();
+  while (!viewer.panesCurrent() && now() - start < 60.0) {  // rendering, not starting up
+    viewer.frame();
+    viewer.waitForChange(true);
+  }
+  if (options.makeReference) viewer.toggleMakeReference();  // as a demo starts: both render
+  const double first = now();
+  double last = first;
+  int frames = 0;
+  while (last - first < options.benchmarkSeconds) {
+    viewer.frame();
+    ++frames;
+    const double t = now();
+    f.worstFrameMs = std::max(f.worstFrameMs, (t - last) * 1e3);
+    last = t;
+    const double next = first + frames / 60.0;
+    if (next > t) std::this_thread::sleep_for(std::chrono::duration<double>(next - t));
+  }
+  f.framesPerSecond = frames / (last - first);
+  if (const auto frame = viewer.worker().frame(0))
+    f.megaRaysPerSecond = frame->stats.counters.totalRays() / frame->stats.seconds * 1e-6;
+  return f;
+}
+
 }  // namespace
 
 int runViewerBenchmark(const ViewerOptions& given) {
@@ -122,6 +178,47 @@ int runViewerBenchmark(const ViewerOptions& given) {
   std::printf(
       "first ms: submit -> first developed image; shown ms: viewer start (GL context, "
       "fonts, worker) -> first frame showing it; img/s: new images the panes showed\n");
+
+  const bool window = hasDisplay();
+  const int besideUi = renderThreadsBesideUi(std::thread::hardware_concurrency());
+  std::printf("\nUI while rendering (%s, frames drawn back to back, at most 60/s):\n",
+              window ? "GLFW window" : "OSMesa, no display");
+  char below[64];
+  std::snprintf(below, sizeof below, "as a window: %d thread%s, nice 10", std::max(besideUi, 1),
+                besideUi > 1 ? "s" : "");
+  std::printf("%-15s | %-29s | %-29s\n", "", "every core, UI's priority", below);
+  std::printf("%-15s | %7s %10s %9s | %7s %10s %9s\n", "integrator/demo", "UI fps", "worst ms",
+              "Mrays/s", "UI fps", "worst ms", "Mrays/s");
+  for (const std::string& name : names) {
+    options.choices.integrator = name;
+    const UiFigures all = measureUi(options, scene, window, false);
+    const UiFigures fewer = measureUi(options, scene, window, true);
+    std::printf("%-15s | %7.1f %10.1f %9.1f | %7.1f %10.1f %9.1f\n", name.c_str(),
+                all.framesPerSecond, all.worstFrameMs, all.megaRaysPerSecond, fewer.framesPerSecond,
+                fewer.worstFrameMs, fewer.megaRaysPerSecond);
+    std::fflush(stdout);
+  }
+  // The lecture's split demos as they start: a 1280 x 720 window, panes following it, the error
+  // plot's reference being made beside them.
+  for (const ViewerDemo& demo : viewerDemos()) {
+    if (demo.splitIntegrator.empty()) continue;
+    ViewerOptions demoOptions = given;
+    applyViewerDemo(demo.name, demoOptions);
+    demoOptions.width = demoOptions.height = 0;
+    auto demoScene =
+        LoadedScene::load(demoOptions.choices.scene, {demoOptions.choices.strictScene});
+    const UiFigures all = measureUi(demoOptions, demoScene, window, false);
+    const UiFigures fewer = measureUi(demoOptions, demoScene, window, true);
+    std::printf("%-15s | %7.1f %10.1f %9.1f | %7.1f %10.1f %9.1f\n", demo.name.c_str(),
+                all.framesPerSecond, all.worstFrameMs, all.megaRaysPerSecond, fewer.framesPerSecond,
+                fewer.worstFrameMs, fewer.megaRaysPerSecond);
+    std::fflush(stdout);
+  }
+  std::printf(
+      "worst ms: the longest frame; a key tapped for less than it was lost before key "
+      "presses were queued. Demos: %dx%d window, split panes following it, their "
+      "reference being made\n",
+      given.windowWidth, given.windowHeight);
   return 0;
 }
 

@@ -22,20 +22,27 @@ std::vector<ViewerDemo> declareDemos() {
     return demo;
   };
 
+  // Assignment 1's nested AO (independent numbers, a fixed 1:4 split of eye and AO rays) against
+  // one 4D integral over well-spread 4D points: with Sobol' on both sides they would look alike.
   ViewerDemo* demo = &add("nested-vs-4d",
-                          "AO as two nested integrals (4 AO rays per eye ray) beside one 4D "
-                          "integral, at equal rays, with their error plots",
+                          "AO as two nested integrals (independent numbers, 4 AO rays per eye "
+                          "ray) beside one 4D integral (Sobol' 4D points), at equal rays, with "
+                          "their error plots",
                           "cornell_box.gltf", "stage2@ref", {"ao-rays=4"});
+  demo->keys = "B equal rays / equal time; M make the reference again; D variance";
   demo->splitIntegrator = "stage3@ref";
   demo->balance = "rays";
-  demo->sampler = "sobol";
+  demo->sampler = "independent";
+  demo->splitSampler = "sobol";
   demo->makeReference = true;
 
-  // Path tracing on the left: the error plot's reference is made by the left pane.
+  // Next-event estimation is a step of its own (nee-small-light): off here, so the two panes
+  // differ in the recursion alone. Path tracing on the left: it makes the error plot's reference.
   demo = &add("naive-vs-path",
-              "path tracing beside naive recursion (3 rays per hit), both 3 bounces deep, at "
-              "equal time",
-              "cornell_box.gltf", "stage5@ref", {"max-depth=3"});
+              "path tracing (no next-event estimation) beside naive recursion (3 rays per hit), "
+              "both 3 bounces deep, at equal time",
+              "cornell_box.gltf", "stage5@ref", {"max-depth=3", "nee=off"});
+  demo->keys = "D rays per sample (the explosion); B equal time / equal rays; M reference again";
   demo->splitIntegrator = "stage4@ref";
   demo->splitParams = {"branching=3", "depth=3"};
   demo->makeReference = true;
@@ -45,6 +52,7 @@ std::vector<ViewerDemo> declareDemos() {
               "path tracing with and without next-event estimation under a small light, at "
               "equal rays",
               "small_light.gltf", "stage5@ref", {"nee=on"});
+  demo->keys = "D variance, one colour scale for both panes; B equal rays / equal time";
   demo->splitIntegrator = "stage5@ref";
   demo->splitParams = {"nee=off"};
   demo->balance = "rays";
@@ -53,13 +61,20 @@ std::vector<ViewerDemo> declareDemos() {
   demo = &add("ray-explosion",
               "rays per camera sample of naive recursion (4 rays per hit, depth 3) as a heatmap",
               "cornell_box.gltf", "stage4@ref", {"branching=4", "depth=3"});
+  demo->keys = "D colour / variance / rays per sample; 5 path tracing, to compare its rays";
   demo->display = "rays";
 
+  // The box filter beside it, with the same seed and spp: what the lobes buy.
   demo = &add("mitchell-lobes",
-              "the Mitchell-Netravali filter at 2 samples per pixel: sharp edges, negative "
-              "lobes, and numerical normalisation keeping flat regions flat",
+              "the Mitchell-Netravali filter at 2 samples per pixel beside the box filter with the "
+              "same seed: sharper edges, negative lobes, and numerical normalisation keeping "
+              "flat regions flat",
               "grading_edges.gltf", "stage1@ref", {});
+  demo->keys = "+ / - exposure, to see the lobes; left drag: the edges at other angles; R reset";
   demo->filter = "mitchell";
+  demo->splitIntegrator = "stage1@ref";
+  demo->splitFilter = "box";
+  demo->balance = "rays";
   demo->spp = 2;
   return demos;
 }
@@ -80,9 +95,13 @@ void applyViewerDemo(const std::string& name, ViewerOptions& options) {
     options.choices.sampler = demo.sampler;
     options.splitIntegrator = demo.splitIntegrator;
     options.splitParams = demo.splitParams;
+    options.splitSampler = demo.splitSampler;
+    options.splitFilter = demo.splitFilter;
     options.balance = demo.balance;
     options.display = demo.display;
     options.makeReference = options.makeReference || demo.makeReference;
+    options.cacheReferences = true;
+    if (options.width == 0 && options.height == 0) options.width = demo.width;
     options.choices.filter =
         demo.filter.empty() ? setting::kFilter.format(setting::kFilter.defaultValue) : demo.filter;
     options.spp = demo.spp > 0 ? demo.spp : kViewerSamplesPerPixel.defaultAs<uint32_t>();
@@ -100,11 +119,14 @@ std::string describeViewerDemo(const ViewerDemo& demo) {
   if (!demo.splitIntegrator.empty()) {
     line += " --split " + demo.splitIntegrator;
     for (const std::string& param : demo.splitParams) line += " --split-param " + param;
+    if (!demo.splitSampler.empty()) line += " --split-sampler " + demo.splitSampler;
+    if (!demo.splitFilter.empty()) line += " --split-filter " + demo.splitFilter;
     line += " --balance " + demo.balance;
   }
   if (demo.display != "color") line += " --display " + demo.display;
   if (!demo.filter.empty()) line += " --filter " + demo.filter;
   if (demo.spp > 0) line += " --spp " + std::to_string(demo.spp);
+  line += " --width " + std::to_string(demo.width);
   if (demo.makeReference) line += " --make-reference";
   return line;
 }

@@ -19,6 +19,8 @@ struct ViewerOptions {
   RenderChoices choices;        // scene, integrator, parameters, sampler, seed, filter
   std::string splitIntegrator;  // non-empty: split view with this on the right
   std::vector<std::string> splitParams;
+  std::string splitSampler;  // the right pane's own sampler (setting::kSampler); empty: the left's
+  std::string splitFilter;   // the right pane's own filter (setting::kFilter); empty: the left's
   std::string balance = "time";  // split view: "time" or "rays"
   int windowWidth = 1280, windowHeight = 720;
   int width = 0, height = 0;  // render size; 0: follow the pane
@@ -34,6 +36,9 @@ struct ViewerOptions {
   std::string reference;   // an EXR the error plot measures the panes against
   uint32_t referenceSpp = setting::kReferenceSamplesPerPixel.defaultAs<uint32_t>();
   bool makeReference = false;  // headless: make the reference once the first image is in (key M)
+  // Keep the references made on disk and use them again (reference_cache.h): the demos do.
+  bool cacheReferences = false;
+  bool prepareReference = false;  // headless: exit once the reference is made (and cached)
   bool benchmark = false;
   double benchmarkSeconds = 3.0;
 };

@@ -44,6 +44,9 @@ ViewerState initialState(const ViewerOptions& options) {
     right.params = options.splitParams;
     applyRecipe(state, 1, right.recipe());
     state.split = true;
+    if (!options.splitSampler.empty())  // the names setting::kSampler declares
+      state.splitSampler = parseSamplerType(options.splitSampler);
+    if (!options.splitFilter.empty()) state.splitFilter = parseFilterType(options.splitFilter);
   }
   if (options.balance == "time")
     state.balance = Balance::EqualTime;
@@ -68,6 +71,7 @@ ViewerState initialState(const ViewerOptions& options) {
   else
     throw PathwayError("unknown display '" + options.display + "' (color, variance or rays)");
   state.referenceSpp = options.referenceSpp;
+  state.cacheReferences = options.cacheReferences;
   state.showHelp = options.showHelp;
   state.strictScene = options.choices.strictScene;
   state.fixedWidth = options.width;
@@ -99,15 +103,17 @@ int runViewer(const ViewerOptions& options) {
                              {}};
     reference = loadReference(options.reference, view);  // a bad file fails before any window
   }
+  state.renderBelowUi = !options.headless;  // someone is using the window while it renders
   std::unique_ptr<Platform> platform =
       options.headless ? createOsmesaPlatform(options.windowWidth, options.windowHeight)
                        : createGlfwPlatform(options.windowWidth, options.windowHeight, "Pathway");
   Viewer viewer(std::move(platform), std::move(state), std::move(scene));
   if (reference) viewer.setReference(std::move(*reference));
 
-  const std::string screenshot = !options.screenshot.empty()
-                                     ? options.screenshot
-                                     : (options.headless ? "pathway_view_screenshot.png" : "");
+  const std::string screenshot = !options.screenshot.empty() ? options.screenshot
+                                 : (options.headless && !options.prepareReference)
+                                     ? "pathway_view_screenshot.png"
+                                     : "";
   const int frames = options.frames > 0 ? options.frames : (options.headless ? 30 : 0);
   // A screenshot should show a render: after the frames asked for, keep drawing (for at most
   // this long) until every pane has its first image.
@@ -124,8 +130,10 @@ int runViewer(const ViewerOptions& options) {
       referenceAsked = true;
     }
     // The frames asked for count once the reference is in (the panes then start over).
-    if (options.makeReference && (!referenceAsked || viewer.makingReference())) drawn = 0;
-    const bool enough = frames > 0 && drawn + 1 >= frames;
+    const bool waitingForReference =
+        options.makeReference && (!referenceAsked || viewer.makingReference());
+    if (waitingForReference) drawn = 0;
+    const bool enough = frames > 0 && drawn + 1 >= frames && !waitingForReference;
     if (enough && deadline == 0.0) deadline = now() + kFirstImageTimeout;
     const bool gradeShown = !options.grade || (gradeAsked && !viewer.grading());
     const bool last = enough && ((viewer.panesCurrent() && gradeShown) || now() > deadline);
@@ -135,6 +143,7 @@ int runViewer(const ViewerOptions& options) {
   }
   if (!screenshot.empty() && frames > 0) std::printf("wrote %s\n", screenshot.c_str());
   if (frames > 0 && viewer.hasReference()) {  // what the plot ended at, for scripts and tests
+    std::printf("error plot reference: %s\n", viewer.referenceSource().c_str());
     const int lanes = options.splitIntegrator.empty() ? 1 : 2;
     for (int lane = 0; lane < lanes; ++lane) {
       const ErrorHistory& history = viewer.errors(lane);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 #include "viewer/viewer_options.h"
 
@@ -12,6 +13,33 @@ const IntegratorInfo* find(const std::string& name) {
   for (const IntegratorInfo* info : allIntegrators())
     if (info->name == name) return info;
   return nullptr;
+}
+
+// A pane leaving a reference remembers which one, to come back to it (T).
+void rememberReference(ViewerState& state, int lane) {
+  const IntegratorInfo* current = find(state.integrator[lane]);
+  if (current && current->variant == Variant::Reference) state.lastReference[lane] = current->name;
+}
+
+// The reference a pane switches to for stage `stage`: the one the other pane of the split view
+// shows, else the one this pane showed before, else the fastest, so both panes' labels match.
+const IntegratorInfo* referenceFor(const ViewerState& state, int lane, int stage) {
+  auto ofStage = [stage](const std::string& name) {
+    const IntegratorInfo* info = find(name);
+    return info && info->stage == stage && info->variant == Variant::Reference ? info : nullptr;
+  };
+  if (state.split)
+    if (const IntegratorInfo* other = ofStage(state.integrator[1 - lane])) return other;
+  if (const IntegratorInfo* before = ofStage(state.lastReference[lane])) return before;
+  if (!findStageIntegrator(stage, Variant::Reference)) return nullptr;
+  // A pane that showed a reference one ray at a time (stageN@ref) keeps doing so.
+  for (const std::string& shown : {state.integrator[lane], state.lastReference[lane]}) {
+    const IntegratorInfo* info = find(shown);
+    if (info && info->variant == Variant::Reference && !info->wavefront)
+      return findStageIntegrator(stage, Variant::Reference);
+  }
+  // The reference renders with its wavefront version where there is one: the same image, sooner.
+  return &findIntegrator(referenceIntegratorName(stage, ReferenceTracing::Fastest));
 }
 
 }  // namespace
@@ -38,19 +66,18 @@ void selectIntegrator(ViewerState& state, int lane, const std::string& name) {
   const IntegratorInfo* info = find(name);
   if (!info) return;
   if (lane == 0 && name != state.integrator[0]) state.settings.sampler = info->defaultSampler;
+  rememberReference(state, lane);
   state.integrator[lane] = name;
 }
 
 bool toggleVariant(ViewerState& state, int lane) {
   const IntegratorInfo* current = find(state.integrator[lane]);
   if (!current) return false;
-  const Variant other =
-      current->variant == Variant::Student ? Variant::Reference : Variant::Student;
-  const IntegratorInfo* info = findStageIntegrator(current->stage, other);
+  const IntegratorInfo* info = current->variant == Variant::Student
+                                   ? referenceFor(state, lane, current->stage)
+                                   : findStageIntegrator(current->stage, Variant::Student);
   if (!info) return false;
-  // The reference renders with its wavefront version where there is one: the same image, sooner.
-  if (other == Variant::Reference)
-    info = &findIntegrator(referenceIntegratorName(current->stage, ReferenceTracing::Fastest));
+  rememberReference(state, lane);
   state.integrator[lane] = info->name;
   return true;
 }
@@ -58,16 +85,18 @@ bool toggleVariant(ViewerState& state, int lane) {
 bool selectStage(ViewerState& state, int lane, int stage) {
   const IntegratorInfo* current = find(state.integrator[lane]);
   const Variant variant = current ? current->variant : Variant::Student;
-  const IntegratorInfo* info =
-      variant == Variant::Reference && findStageIntegrator(stage, variant)
-          ? &findIntegrator(referenceIntegratorName(stage, ReferenceTracing::Fastest))
-          : findStageIntegrator(stage, variant);
-  if (!info && variant == Variant::Student && findStageIntegrator(stage, Variant::Reference))
-    info = &findIntegrator(referenceIntegratorName(stage, ReferenceTracing::Fastest));
+  const IntegratorInfo* info = variant == Variant::Reference
+                                   ? referenceFor(state, lane, stage)
+                                   : findStageIntegrator(stage, Variant::Student);
+  if (!info && variant == Variant::Student) info = referenceFor(state, lane, stage);
   if (!info) info = findStageIntegrator(stage, Variant::Student);
   if (!info) return false;
   selectIntegrator(state, lane, info->name);
   return true;
+}
+
+int renderThreadsBesideUi(unsigned cores) {
+  return cores > 1 ? static_cast<int>(cores) - 1 : 0;
 }
 
 WorkerJob makeJob(const ViewerState& state, std::shared_ptr<const LoadedScene> scene,
@@ -78,6 +107,8 @@ WorkerJob makeJob(const ViewerState& state, std::shared_ptr<const LoadedScene> s
   job.settings = state.settings;
   job.settings.width = std::max(width, 1);
   job.settings.height = std::max(height, 1);
+  if (state.renderBelowUi)
+    job.settings.threads = renderThreadsBesideUi(std::thread::hardware_concurrency());
   for (int lane = 0; lane < (state.split ? 2 : 1); ++lane) {
     LaneJob laneJob;
     laneJob.integrator = state.integrator[lane];
@@ -85,6 +116,10 @@ WorkerJob makeJob(const ViewerState& state, std::shared_ptr<const LoadedScene> s
     if (const IntegratorInfo* info = find(laneJob.integrator))
       for (const OptionSpec& spec : info->params)
         laneJob.params[spec.name] = paramValue(state, lane, *info, spec);
+    if (lane == 1) {
+      laneJob.sampler = state.splitSampler;
+      laneJob.filter = state.splitFilter;
+    }
     job.lanes.push_back(std::move(laneJob));
   }
   if (state.split) {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -26,6 +27,7 @@ struct ViewerState {
   std::string integrator[2] = {setting::kIntegrator,
                                setting::kIntegrator};  // left (or only) pane, right pane
   EarlierStages earlierStages[2] = {EarlierStages::Own, EarlierStages::Own};
+  std::string lastReference[2];  // the reference each pane showed last, for T to return to
   // (stage, name) -> value, every value one the parameter accepts (the widgets and the command
   // line refuse others, nothing clamps).
   std::map<std::pair<int, std::string>, double> params[2];
@@ -39,11 +41,20 @@ struct ViewerState {
 
   bool split = false;
   Balance balance = Balance::EqualTime;
+  // The right pane's own sampler (e.g. Sobol' 4D points against the left pane's independent
+  // numbers) and pixel filter (e.g. box against Mitchell); none: both panes use settings'.
+  std::optional<SamplerType> splitSampler;
+  std::optional<FilterType> splitFilter;
   float budgetSeconds = 0.0f;   // equal time: per pane; 0: up to the spp target
   float budgetMegaRays = 0.0f;  // equal rays: per pane, in millions; 0: up to the spp target
 
   uint32_t referenceSpp =
       setting::kReferenceSamplesPerPixel.defaultAs<uint32_t>();  // Make reference
+
+  // A window: render beside its UI thread (render_priority.h), on renderThreadsBesideUi threads.
+  // Offscreen runs (screenshots, tests) have nobody waiting on their frames: every core.
+  bool renderBelowUi = false;
+  bool cacheReferences = false;  // references made are kept on disk and found there (demos)
 
   bool paused = false;
   bool showHelp = false;
@@ -59,10 +70,17 @@ void setParamValue(ViewerState& state, int lane, const IntegratorInfo& info, con
 
 // Chooses an integrator for a pane; the left pane's choice also brings its stage's usual sampler.
 void selectIntegrator(ViewerState& state, int lane, const std::string& name);
-// stageN <-> stageN@ref in that pane, when the other one is built in. Returns false otherwise.
+// Yours <-> reference of the pane's stage, when the other one is built in (else returns false).
+// The reference is the one the other pane shows (so the two labels match), else the one this pane
+// left, else the fastest (stageN@fast where it exists).
 bool toggleVariant(ViewerState& state, int lane);
-// Stage `stage` in the pane's current variant (or the other one when only that exists).
+// Stage `stage` in the pane's current variant (or the other one when only that exists); a reference
+// is chosen as toggleVariant chooses it.
 bool selectStage(ViewerState& state, int lane, int stage);
+
+// Render threads beside a window's UI thread on `cores` cores: one fewer than the cores, so the UI
+// keeps a core for its frames (measured on 2 cores: README, "Benchmarks"); 0 (all) on one core.
+int renderThreadsBesideUi(unsigned cores);
 
 // The job for panes of `width` x `height` render pixels.
 WorkerJob makeJob(const ViewerState& state, std::shared_ptr<const LoadedScene> scene,

@@ -59,6 +59,12 @@ class GlfwPlatform : public Platform {
   const GlFunctions& gl() const override { return gl_; }
 
   void initImGui() override {
+    // Ours first: ImGui's backend installs its callbacks over it and calls it from them, so
+    // ImGui's own keyboard input (text fields, navigation) works as before.
+    glfwSetWindowUserPointer(window_, &keys_);
+    glfwSetKeyCallback(window_, [](GLFWwindow* window, int key, int, int action, int mods) {
+      static_cast<KeyQueue*>(glfwGetWindowUserPointer(window))->onKey(key, action, mods);
+    });
     ImGui_ImplGlfw_InitForOpenGL(window_, true);
     if (!ImGui_ImplOpenGL3_Init("#version 130")) {
       ImGui_ImplGlfw_Shutdown();
@@ -80,6 +86,7 @@ class GlfwPlatform : public Platform {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
   }
+  std::vector<KeyPress> takeKeyPresses() override { return keys_.take(); }
   void renderDrawData(ImDrawData* data) override { ImGui_ImplOpenGL3_RenderDrawData(data); }
   void present() override { glfwSwapBuffers(window_); }
   void framebufferSize(int& width, int& height) const override {
@@ -89,6 +96,7 @@ class GlfwPlatform : public Platform {
  private:
   GLFWwindow* window_ = nullptr;
   GlFunctions gl_;
+  KeyQueue keys_;
 };
 
 }  // namespace
