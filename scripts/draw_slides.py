@@ -444,15 +444,16 @@ def nee_sweep():
 
 # ---- Viewer screenshots, cropped to their image panes ----
 
-# The viewer draws its panel over x < 380 and each pane's caption over its top 110 rows.
+# The demos render their panes 400 pixels wide (viewer_demos.h); in a 1280 x 720 window the
+# viewer draws its panel over x < 380 and shows each pane's image scaled to 448 pixels wide,
+# centred in its pane, with the pane's caption below it.
 PANEL = 380
-CAPTION = 110
 
 
 def panes(name, boxes, titles, out, height_px):
     """The panes side by side, height_px tall with a title line; as wide as their shape needs."""
     shot = Image.open(os.path.join(FIGURES, "viewer", f"{name}.png")).convert("RGB")
-    image_height = height_px - 40
+    image_height = height_px - 60  # the rest is the title line
     width_px = sum(image_height * (b[2] - b[0]) / (b[3] - b[1]) for b in boxes) + 20 * len(boxes)
     fig, axes = figure(width_px, height_px, ncols=len(boxes))
     axes = np.atleast_1d(axes)
@@ -464,26 +465,25 @@ def panes(name, boxes, titles, out, height_px):
 
 
 def viewer_crops():
-    left, right = (PANEL + 2, CAPTION, 828, 704), (834, CAPTION, 1280, 704)
-    panes("nested-vs-4d", [left, right], ["nested, 1 : 4", "4D"],
-          "nested-vs-4d-panes", 450)
-    panes("nee-small-light", [left, right], ["NEE on", "NEE off"], "nee-small-light-panes", 450)
-    panes("naive-vs-path", [left, right], ["path tracing + NEE", "naive recursion, b = 3"],
-          "naive-vs-path-panes", 450)
-    panes("ray-explosion", [(480, 50, 1180, 660)],
+    # Square scenes: each pane's image is 448 x 448 from the top of row 136.
+    left, right = (PANEL + 1, 137, 828, 583), (833, 137, 1280, 583)
+    panes("nested-vs-4d", [left, right], ["nested, independent, 1 : 4", "4D, Sobol'"],
+          "nested-vs-4d-panes", 420)
+    panes("nee-small-light", [left, right], ["NEE on", "NEE off"], "nee-small-light-panes", 420)
+    panes("naive-vs-path", [left, right], ["path tracing, no NEE", "naive recursion, b = 3"],
+          "naive-vs-path-panes", 420)
+    # One pane: the image fills the window's height; its caption and legend stay out.
+    panes("ray-explosion", [(475, 48, 1185, 650)],
           ["rays per camera sample"], "ray-explosion-pane", 420)
-    # Mitchell: a bright square on purple and grey, magnified 6x without smoothing, where the
-    # negative lobes draw dark rims along the bright edges.
+    # Mitchell against the box, the same samples: the white square's corner magnified without
+    # smoothing, where Mitchell's negative lobes draw dark rims along the bright edges.
     shot = Image.open(os.path.join(FIGURES, "viewer", "mitchell-lobes.png")).convert("RGB")
-    fig, (whole, zoom) = figure(1000, 430, ncols=2)
-    box = (630, 520, 720, 610)
-    whole.imshow(shot.crop((PANEL, 50, 1280, 720)), interpolation="lanczos")
-    whole.add_patch(plt.Rectangle((box[0] - PANEL, box[1] - 50), box[2] - box[0],
-                                  box[3] - box[1], fill=False, edgecolor="#ff0", linewidth=3))
-    whole.set_title("Mitchell–Netravali, 2 samples per pixel")
-    zoom.imshow(shot.crop(box), interpolation="nearest")
-    zoom.set_title("the yellow box, pixels magnified")
-    for axis in (whole, zoom):
+    fig, axes = figure(900, 390, ncols=2)
+    pane_offset = 452  # the right pane's image starts 452 pixels right of the left one's
+    for axis, shift, title in zip(axes, (0, pane_offset), ("Mitchell–Netravali", "box")):
+        box = (515 + shift, 425, 585 + shift, 495)
+        axis.imshow(shot.crop(box), interpolation="nearest")
+        axis.set_title(f"{title}, 2 spp, magnified")
         axis.axis("off")
     save(fig, "viewer", "mitchell-lobes-pane")
 
