@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "core/sandbox.h"
@@ -256,20 +257,28 @@ TEST(HostileBaked, ReferencesBakedIntoTheSourceFailAsTooCloseAndOnTheCourseCases
   const std::vector<test::CaseLine> lines =
       test::caseLines(test::readTextFile((dir / "out/results.json").string()));
   ASSERT_EQ(lines.size(), gradingCasesOf(1).size()) << graded.output;
-  // Every shipped case is too close to be true, but for one of the two that share the Mitchell
-  // radius, which gets the other's reference: a near-perfect image of the same scene, which only
-  // the course's own cases can tell from honest work. Those fail: the handout has no image of them.
-  size_t shipped = 0, tooClose = 0, courseFailed = 0;
+  // Every shipped case fails. The first case of each filter radius gets its own reference back and
+  // is too close to be true; a later case with the same radius gets the first one's image (of
+  // another scene or size). The course's own cases fail: the handout has no image of them.
+  std::set<float> radii;
+  size_t tooClose = 0, shippedFailed = 0, shipped = 0, courseFailed = 0;
   for (const GradingCase* c : gradingCasesOf(1)) {
     const std::string name = "Stage 1 · " + c->name;
     for (const test::CaseLine& line : lines) {
       if (line.name != name) continue;
-      shipped += !c->courseOnly;
-      if (c->courseOnly) courseFailed += line.status == "failed";
-      tooClose += !c->courseOnly && line.output.find("too close to be true") != std::string::npos;
+      if (c->courseOnly) {
+        courseFailed += line.status == "failed";
+        continue;
+      }
+      ++shipped;
+      shippedFailed += line.status == "failed";
+      radii.insert(c->filterRadius > 0 ? c->filterRadius : naturalFilterRadius(c->filter));
+      tooClose += line.output.find("too close to be true") != std::string::npos;
     }
   }
-  EXPECT_GE(tooClose, shipped - 1) << test::readTextFile((dir / "out/results.json").string());
+  const std::string results = test::readTextFile((dir / "out/results.json").string());
+  EXPECT_EQ(shippedFailed, shipped) << results;
+  EXPECT_GE(tooClose, radii.size()) << results;
   EXPECT_GE(courseFailed, 1u);
   fs::remove_all(dir);
 }

@@ -41,8 +41,10 @@ std::vector<GradingCase> declareCases() {
       // The profiles themselves: stripes fill the frame, so every pixel depends on the filter's
       // shape. Each coefficient of each piece 10 % off is caught in 10 of 10 renders at these
       // spp; at 64 spp some were caught in none (docs/grading-course.md).
+      // A box wider than a pixel: the skeleton's splat into the one pixel a sample falls in is
+      // exactly the box of radius 1/2, so at that radius the untouched skeleton would pass.
       B(1, "stripes-box", "grading_stripes.gltf", "the box's width on stripes of every frequency")
-          .filter(FilterType::Box)
+          .filter(FilterType::Box, 0.75f)
           .size(64, 48)
           .spp(256)
           .tiles(2),
