@@ -205,6 +205,8 @@ int runViewerBenchmark(const ViewerOptions& given) {
     ViewerOptions demoOptions = given;
     applyViewerDemo(demo.name, demoOptions);
     demoOptions.width = demoOptions.height = 0;
+    // The reference is made beside the panes (a demo without --prepare-demos), and not kept.
+    demoOptions.cacheReferences = false;
     auto demoScene =
         LoadedScene::load(demoOptions.choices.scene, {demoOptions.choices.strictScene});
     const UiFigures all = measureUi(demoOptions, demoScene, window, false);
