@@ -44,7 +44,14 @@ void putNumber(int64_t value) {
   put(out);
 }
 
+std::atomic<bool> reporting{false};
+
 void onFatalSignal(int signal) {
+  // Render threads running the same faulty code often fault together: the first one reports and
+  // ends the process; the others wait for that, so the report's lines are never interleaved.
+  if (reporting.exchange(true)) {
+    for (;;) ::pause();
+  }
   put("\npathway: stopped by SIG");
   put(sigabbrev_np(signal) ? sigabbrev_np(signal) : "NAL");
   bool first = true;
