@@ -243,6 +243,17 @@ def splat():
 
 # ---- Nested against joint sampling ----
 
+def unit_square(axis, ylim, xlabel, ylabel):
+    """A scatter plot's frame: [0, 1] across, `ylim` up (room for marks below 0), equal scales."""
+    axis.set_xlim(0, 1)
+    axis.set_ylim(*ylim)
+    axis.set_aspect("equal")
+    axis.set_xticks([0, 1])
+    axis.set_yticks([0, 1])
+    axis.set_xlabel(xlabel)
+    axis.set_ylabel(ylabel)
+
+
 def scatter_1d1d():
     """16 samples of ∫∫ f(x, y) dy dx: nested (4 x's, 4 y's each) against one 2D point set."""
     rng = np.random.default_rng(3)
@@ -255,13 +266,7 @@ def scatter_1d1d():
         axis.plot(points[:, 0], points[:, 1], "o", color=COLOURS[0], markersize=10)
         for v in points[:, 0]:
             axis.plot([v, v], [-0.06, -0.01], color=COLOURS[3], linewidth=2)
-        axis.set_xlim(0, 1)
-        axis.set_ylim(-0.07, 1.04)
-        axis.set_aspect("equal")
-        axis.set_xticks([0, 1])
-        axis.set_yticks([0, 1])
-        axis.set_xlabel("x (outer)")
-        axis.set_ylabel("y (inner)")
+        unit_square(axis, (-0.07, 1.04), "x (outer)", "y (inner)")
         axis.set_title(f"{title}\n{len(set(np.round(points[:, 0], 9)))} distinct x")
     save(fig, "samples", "nested-vs-2d")
 
@@ -277,13 +282,7 @@ def scatter_4d():
     for axis, points, title in ((axes[0], nested, "nested: 8 eyes × 4"),
                                 (axes[1], joint, "4D Sobol': 32 × 1")):
         axis.plot(points[:, 0], points[:, 2], "o", color=COLOURS[0], markersize=9)
-        axis.set_xlim(0, 1)
-        axis.set_ylim(-0.03, 1.03)
-        axis.set_aspect("equal")
-        axis.set_xticks([0, 1])
-        axis.set_yticks([0, 1])
-        axis.set_xlabel("x in the pixel")
-        axis.set_ylabel("u₁ of the direction")
+        unit_square(axis, (-0.03, 1.03), "x in the pixel", "u₁ of the direction")
         axis.set_title(title)
     save(fig, "samples", "ao-4d")
 
