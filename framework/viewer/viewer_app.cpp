@@ -118,13 +118,15 @@ float Viewer::sharedScale(const std::shared_ptr<const LaneFrame>* frames) {
   // Side by side, the false-colour modes share one scale: with one each, a pane with 1e-7 times
   // the other's variance would look just as noisy.
   if (!state_.split || state_.display == DisplayMode::Color) return 0.0f;
-  for (int lane = 0; lane < 2; ++lane) {
-    if (frames[lane] == topOf_[lane] && topMode_[lane] == state_.display) continue;
-    ownTop_[lane] = frames[lane] ? displayScaleTop(*frames[lane], state_.display) : 0.0f;
-    topOf_[lane] = frames[lane];
-    topMode_[lane] = state_.display;
-  }
-  return std::max(ownTop_[0], ownTop_[1]);
+  // Worked out again only when a pane has a new image or the display changed.
+  if (frames[0] == topOf_[0] && frames[1] == topOf_[1] && topMode_ == state_.display)
+    return sharedTop_;
+  const LaneFrame* const shown[2] = {frames[0].get(), frames[1].get()};
+  sharedTop_ = sharedScaleTop(shown, 2, state_.display);
+  topOf_[0] = frames[0];
+  topOf_[1] = frames[1];
+  topMode_ = state_.display;
+  return sharedTop_;
 }
 
 void Viewer::updateTextures() {

@@ -87,10 +87,10 @@ class Viewer {
   float shownExposure_[2] = {0.0f, 0.0f};
   float scaleMax_[2] = {0.0f, 0.0f};
   float shownScale_[2] = {0.0f, 0.0f};  // the shared scale each texture was made with (0: own)
-  // Each pane's own false-colour top, for the frame and mode it was computed for.
+  // Both panes' shared false-colour top (sharedScaleTop), for the frames and mode it is of.
   std::shared_ptr<const LaneFrame> topOf_[2];
-  DisplayMode topMode_[2] = {DisplayMode::Color, DisplayMode::Color};
-  float ownTop_[2] = {0.0f, 0.0f};
+  DisplayMode topMode_ = DisplayMode::Color;
+  float sharedTop_ = 0.0f;
   std::unique_ptr<RenderWorker> worker_;
   std::optional<WorkerJob> submitted_;
   uint64_t jobId_ = 0;
