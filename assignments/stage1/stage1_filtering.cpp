@@ -4,7 +4,10 @@
 // centred on the pixel,
 //     I_j = ∫ f(x - x_j, y - y_j) L(x, y) dx dy  /  ∫ f(x - x_j, y - y_j) dx dy.
 // Estimate numerator and denominator with the SAME samples: every sample adds f_j·L and f_j to
-// every pixel j whose filter reaches it, and the film divides the two sums at the end.
+// every pixel j whose filter reaches it, and the film divides the two sums at the end. (The road
+// not taken, filter importance sampling, draws each pixel's own positions with density ∝ |f| so
+// that a sample serves one pixel with weight ±1; here every sample serves all the pixels it
+// reaches, so the weights stay in the sums.)
 //
 // Your part: the four filter profiles and the splat (the TODOs below; README.md beside this file
 // explains them). The shading (albedo lit from the eye) is given by the framework.

@@ -24,12 +24,11 @@ class AmbientOcclusion4D : public Integrator {
   Color Li(const Ray& cameraRay, SampleStream& samples,
            const RenderContext& context) const override {
     // Dimensions 0-1 of this sample already placed the eye ray in the pixel (the renderer did
-    // that). Draw the AO direction's pair HERE, before the eye ray is traced: draw first, then
-    // decide. Every sample then takes dimensions 2-3, the ones stratified together with 0-1 in
-    // one 4D point, for the AO direction, whether its eye ray hits or misses (stage 3 README,
-    // "How a sample's numbers are handed out"). Nothing is drawn after a miss in this stage, so
-    // drawing the pair after the miss test would give the same image; the habit matters once
-    // more numbers follow, as in stage 5.
+    // that); the AO direction takes dimensions 2-3, stratified with them in one 4D point. Draw
+    // the pair HERE, before the eye ray is traced, because a dimension must mean the same thing
+    // in every sample whatever its rays hit (stage 3 README, "How a sample's numbers are handed
+    // out"), and drawing before deciding is what keeps that true once a miss or a depth limit
+    // would otherwise skip draws, as in stage 5.
     PATHWAY_TODO(
         "draw the AO direction's pair here (dimensions 2-3 of the same sample), then return one "
         "AO estimate below (your stage 2 function is stage2_.ambientOcclusionSample)");

@@ -67,19 +67,8 @@ class PathTracer : public Integrator {
   //
   // Russian roulette. If X estimates the rest of the path, going on with probability q and
   // using X / q (else 0) has the mean q · E[X] / q + (1 - q) · 0 = E[X], for any 0 < q <= 1.
-  // The rule here: from the rr-depth-th bounce ray on (bounce + 1 >= rouletteDepth_, bounce 0
-  // being the camera ray's hit), once the throughput includes this bounce's factor,
-  //     q = min(0.95, the largest component of the throughput)   (maxComponent);
-  // the path goes on when samples.next1D() < q, its throughput divided by q. q < 1, so even a
-  // path between white walls ends; a black throughput (q = 0) always ends.
-  //
-  // The sample's numbers, in this order at every hit, the same in every sample (stage 5 README):
-  //   - at the depth limit (maxDepth_ >= 0 and bounce >= maxDepth_) the path ends: none;
-  //   - NEE (only when nextEventEstimation_): directLight() draws next1D() for the emitter and
-  //     next2D() for the point on it, even when the scene has no emitter;
-  //   - next2D(): the continuation direction;
-  //   - next1D(): the roulette number, whenever roulette is on at this bounce (whatever q is).
-  // A miss ends the path before anything is drawn.
+  // The reference's rule for q, and the order in which a sample draws its numbers at every hit,
+  // are in README.md beside this file ("Russian roulette", "The order of a sample's numbers").
   //
   // Useful: hit->emitted, hit->albedo, hit->normal; directLight() below (NEE);
   // stage2_.sampleCosineHemisphere(samples.next2D()), stage2_.cosineHemispherePdf(cos θ);
@@ -97,9 +86,14 @@ class PathTracer : public Integrator {
         radiance += throughput * context.background();  // NEE never samples the background
         break;
       }
-      PATHWAY_TODO(
-          "the path loop: emission (counted once), the depth limit, NEE, one continuation ray "
-          "per bounce, Russian roulette with the 1/q weight");
+      PATHWAY_TODO("the path loop: steps (a) to (e) below, then remove the placeholder lines");
+      // TODO (a) Emission: throughput · hit->emitted, for the camera ray always, for a bounce
+      //          ray only when NEE is off (NEE has counted that light already).
+      // TODO (b) The depth limit: when maxDepth_ >= 0 and bounce >= maxDepth_, the path ends.
+      // TODO (c) NEE, when nextEventEstimation_: throughput · directLight(*hit, brdf, ...).
+      // TODO (d) One continuation: a cosine-weighted direction from samples.next2D() (your stage
+      //          2), the throughput times brdf · cos θ / p(ω), the next ray (RayKind::Secondary).
+      // TODO (e) Russian roulette from the rr-depth-th bounce ray on, dividing by q (README).
       (void)bounce, (void)samples;
       // Placeholder: the first surface lit from the eye, plus what it emits; the path ends.
       radiance += throughput * eyeLightShading(*hit, ray);

@@ -66,19 +66,8 @@ class PathTracer : public Integrator {
   //
   // Russian roulette. If X estimates the rest of the path, going on with probability q and
   // using X / q (else 0) has the mean q · E[X] / q + (1 - q) · 0 = E[X], for any 0 < q <= 1.
-  // The rule here: from the rr-depth-th bounce ray on (bounce + 1 >= rouletteDepth_, bounce 0
-  // being the camera ray's hit), once the throughput includes this bounce's factor,
-  //     q = min(0.95, the largest component of the throughput)   (maxComponent);
-  // the path goes on when samples.next1D() < q, its throughput divided by q. q < 1, so even a
-  // path between white walls ends; a black throughput (q = 0) always ends.
-  //
-  // The sample's numbers, in this order at every hit, the same in every sample (stage 5 README):
-  //   - at the depth limit (maxDepth_ >= 0 and bounce >= maxDepth_) the path ends: none;
-  //   - NEE (only when nextEventEstimation_): directLight() draws next1D() for the emitter and
-  //     next2D() for the point on it, even when the scene has no emitter;
-  //   - next2D(): the continuation direction;
-  //   - next1D(): the roulette number, whenever roulette is on at this bounce (whatever q is).
-  // A miss ends the path before anything is drawn.
+  // The rule for q and the order of a sample's numbers are the stage 5 README's (the students'
+  // statement of them); the code below plays them.
   Color Li(const Ray& cameraRay, SampleStream& samples,
            const RenderContext& context) const override {
     Color radiance(0.0f);
