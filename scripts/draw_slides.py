@@ -463,6 +463,23 @@ def panes(name, boxes, titles, out, height_px):
     save(fig, "viewer", out)
 
 
+def ray_explosion():
+    """Naive recursion at depths 1 and 3 beside path tracing at depth 3: the demo at its start
+    and two presses of Up later, on the demo's one log scale (1 to 1365 rays per sample)."""
+    # The rays display's legend pushes the panes' captions up over the images' bottom rows.
+    left, right = (PANEL + 1, 137, 828, 530), (833, 137, 1280, 530)
+    crops = [("ray-explosion", left, "naive, depth 1"),
+             ("ray-explosion-depth3", left, "naive, depth 3"),
+             ("ray-explosion-depth3", right, "path tracing, depth 3")]
+    fig, axes = figure(1100, 420, ncols=3)
+    for axis, (name, box, title) in zip(axes, crops):
+        shot = Image.open(os.path.join(FIGURES, "viewer", f"{name}.png")).convert("RGB")
+        axis.imshow(shot.crop(box), interpolation="lanczos")
+        axis.set_title(title)
+        axis.axis("off")
+    save(fig, "viewer", "ray-explosion-panes")
+
+
 def viewer_crops():
     # Square scenes: each pane's image is 448 x 448 from the top of row 136.
     left, right = (PANEL + 1, 137, 828, 583), (833, 137, 1280, 583)
@@ -471,9 +488,7 @@ def viewer_crops():
     panes("nee-small-light", [left, right], ["NEE on", "NEE off"], "nee-small-light-panes", 420)
     panes("naive-vs-path", [left, right], ["path tracing, no NEE", "naive recursion, b = 3"],
           "naive-vs-path-panes", 420)
-    # One pane: the image fills the window's height; its caption and legend stay out.
-    panes("ray-explosion", [(475, 48, 1185, 650)],
-          ["rays per camera sample"], "ray-explosion-pane", 420)
+    ray_explosion()
     # Mitchell against the box, the same samples: the white square's corner magnified without
     # smoothing, where Mitchell's negative lobes draw dark rims along the bright edges.
     shot = Image.open(os.path.join(FIGURES, "viewer", "mitchell-lobes.png")).convert("RGB")

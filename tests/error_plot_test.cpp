@@ -146,6 +146,10 @@ TEST(ErrorHistory, AReferenceGoesStaleWhenTheViewChanges) {
   LaneFrame otherScene = flatFrame(5, 1, 0.1, 1.0f);
   otherScene.scenePath = "other.gltf";
   EXPECT_NE(referenceProblem(reference, otherScene).find("another scene"), std::string::npos);
+  LaneFrame resizedLights = flatFrame(5, 1, 0.1, 1.0f);
+  resizedLights.sceneContent += 1;  // the same file loaded with another light size
+  EXPECT_NE(referenceProblem(reference, resizedLights).find("the scene changed"),
+            std::string::npos);
 
   // Parameters: a longer AO ray changes the expected image, more AO rays per sample do not.
   const std::vector<OptionSpec> aoParams = {
@@ -222,7 +226,7 @@ TEST_F(ErrorPlotFiles, LoadsAnExrAndRefusesWhatItCannotUse) {
   made.seed = 7;
   made.sampler = SamplerType::Sobol;
   writeImageFile(path("ref.exr"), images, made, 0.0f);
-  const ReferenceView view{"scene.gltf", CameraPose{}, FilterType::Box, 0.5f, {}};
+  const ReferenceView view{"scene.gltf", 0, CameraPose{}, FilterType::Box, 0.5f, {}};
   const ReferenceImage reference = loadReference(path("ref.exr"), view);
   EXPECT_EQ(reference.image.width, 6);
   EXPECT_EQ(reference.image.height, 4);

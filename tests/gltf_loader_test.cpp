@@ -348,6 +348,53 @@ TEST(GltfScenes, CourseScenesLoad) {
   EXPECT_EQ(textured.background, Color(1.0f));  // its extras.pathway_background
 }
 
+// Each light's power is its radiance × area × π (one-sided Lambertian): resizing at fixed power
+// keeps radiance × area, and moves nothing else.
+TEST(GltfScenes, LightScaleResizesEachLightAboutItsCentreAtFixedPower) {
+  const Scene original = loadScene(kScenes + "cornell_box.gltf");
+  SceneLoadOptions quarter;
+  quarter.lightScale = 0.25f;
+  const Scene resized = loadScene(kScenes + "cornell_box.gltf", quarter);
+  auto area = [](const Mesh& mesh) {
+    double sum = 0.0;
+    for (const glm::uvec3& t : mesh.triangles)
+      sum += 0.5 * glm::length(glm::cross(mesh.positions[t.y] - mesh.positions[t.x],
+                                          mesh.positions[t.z] - mesh.positions[t.x]));
+    return sum;
+  };
+  auto centre = [](const Mesh& mesh) {
+    Bounds bounds;
+    for (const Vec3& p : mesh.positions) bounds.extend(p);
+    return bounds.center();
+  };
+  int lights = 0;
+  ASSERT_EQ(original.meshes.size(), resized.meshes.size());
+  for (size_t i = 0; i < original.meshes.size(); ++i) {
+    const Mesh& before = original.meshes[i];
+    const Mesh& after = resized.meshes[i];
+    const Material& materialBefore = original.materials[before.material];
+    const Material& materialAfter = resized.materials[after.material];
+    if (!materialBefore.isEmissive()) {
+      EXPECT_EQ(std::vector<Vec3>(before.positions.begin(), before.positions.end()),
+                std::vector<Vec3>(after.positions.begin(), after.positions.end()))
+          << before.name;
+      EXPECT_EQ(materialBefore.emission, materialAfter.emission);
+      continue;
+    }
+    ++lights;
+    EXPECT_NEAR(area(after), area(before) / 16.0, 1e-6 * area(before)) << before.name;
+    EXPECT_NEAR(glm::length(centre(after) - centre(before)), 0.0, 1e-5) << before.name;
+    EXPECT_NEAR(materialAfter.emission.y * area(after), materialBefore.emission.y * area(before),
+                1e-4 * materialBefore.emission.y * area(before))
+        << before.name;
+  }
+  EXPECT_EQ(lights, 1);
+  SceneLoadOptions none;
+  none.lightScale = 0.0f;
+  EXPECT_NE(loadError(kScenes + "cornell_box.gltf", none).find("positive and finite"),
+            std::string::npos);
+}
+
 TEST(GltfScenes, BackgroundMustBeThreeNonNegativeNumbers) {
   const auto withBackground = [](const std::string& name, const std::string& value) {
     return writeQuadFile(

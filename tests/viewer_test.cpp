@@ -332,6 +332,60 @@ TEST(ViewerKeys, APressAndReleaseWithinOneFrameActsOnce) {
   EXPECT_EQ(state.integrator[1], "stage3");
 }
 
+// Up / Down step the depth of the panes that recurse (the ray explosion), within their range;
+// [ / ] halve and double the lights within the setting's range, and ask for the scene again.
+TEST(ViewerKeys, DepthAndLightSizeStepWithinTheirRanges) {
+  if (!registered("stage4@ref") || !registered("stage5@ref") || !registered("stage2@ref"))
+    GTEST_SKIP() << "needs the reference stages";
+  ViewerState state;
+  state.split = true;
+  state.integrator[0] = "stage4@ref";
+  state.integrator[1] = "stage5@ref";
+  const IntegratorInfo& naive = findIntegrator("stage4@ref");
+  const IntegratorInfo& path = findIntegrator("stage5@ref");
+  auto depth = [&](int lane, const IntegratorInfo& info) {
+    for (const OptionSpec& spec : info.params)
+      if (spec.isRecursionDepth) return paramValue(state, lane, info, spec);
+    ADD_FAILURE() << info.name << " declares no recursion depth";
+    return -2.0;
+  };
+  const double naiveStart = depth(0, naive), pathStart = depth(1, path);
+  KeyQueue queue;
+  auto press = [&](int key) {
+    queue.onKey(key, GLFW_PRESS, 0);
+    return applyKeyPresses(state, queue.take());
+  };
+  press(GLFW_KEY_UP);
+  EXPECT_EQ(depth(0, naive), naiveStart + 1);
+  EXPECT_EQ(depth(1, path), pathStart + 1);
+  for (int i = 0; i < 100; ++i) press(GLFW_KEY_DOWN);
+  EXPECT_EQ(depth(0, naive), 0.0);
+  EXPECT_EQ(depth(1, path), 0.0) << "-1 (no limit) is not one step below 0";
+  state.integrator[0] = "stage2@ref";  // no depth: left alone, no error
+  EXPECT_NO_THROW(press(GLFW_KEY_UP));
+  EXPECT_EQ(depth(1, path), 1.0);
+
+  EXPECT_TRUE(press(GLFW_KEY_LEFT_BRACKET).resizeLights);
+  EXPECT_FLOAT_EQ(state.sceneOptions.lightScale, 0.5f);
+  EXPECT_TRUE(press(GLFW_KEY_RIGHT_BRACKET).resizeLights);
+  EXPECT_FLOAT_EQ(state.sceneOptions.lightScale, 1.0f);
+  for (int i = 0; i < 20; ++i) press(GLFW_KEY_LEFT_BRACKET);
+  EXPECT_FLOAT_EQ(state.sceneOptions.lightScale, setting::kLightScale.minValue);
+  EXPECT_FALSE(press(GLFW_KEY_LEFT_BRACKET).resizeLights) << "at the bottom: nothing to load";
+}
+
+// Rays per camera sample multiply with depth: on a log scale each ×N is one equal step, so the
+// ray explosion's fixed scale (1 to 1365) shows every depth as a colour of its own.
+TEST(ViewerDisplay, RaysAreShownOnALogScaleAndVarianceOnALinearOne) {
+  EXPECT_FLOAT_EQ(falseColorPosition(DisplayMode::RayHeatmap, 1.0f, 1365.0f), 0.0f);
+  EXPECT_FLOAT_EQ(falseColorPosition(DisplayMode::RayHeatmap, 4.0f, 16.0f), 0.5f);
+  EXPECT_FLOAT_EQ(falseColorPosition(DisplayMode::RayHeatmap, 0.0f, 16.0f), 0.0f);
+  EXPECT_FLOAT_EQ(falseColorPosition(DisplayMode::Variance, 4.0f, 16.0f), 0.25f);
+  const float depth2 = falseColorPosition(DisplayMode::RayHeatmap, 21.0f, 1365.0f);
+  const float depth3 = falseColorPosition(DisplayMode::RayHeatmap, 85.0f, 1365.0f);
+  EXPECT_GT(depth3 - depth2, 0.18f) << "one depth step is a fifth of the scale";
+}
+
 // A window leaves its UI thread a core; one core is shared.
 TEST(ViewerState, RendersBesideTheUiOnOneCoreFewer) {
   EXPECT_EQ(renderThreadsBesideUi(2), 1);

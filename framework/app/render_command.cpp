@@ -68,7 +68,7 @@ int run(const RenderOptions& options, const LaunchClock& clock) {
   for (const std::string& output : options.outputs) checkImagePath(output);
 
   const double startMs = clock.milliseconds();
-  const Scene scene = loadScene(options.choices.scene, {options.choices.strictScene});
+  const Scene scene = loadScene(options.choices.scene, options.choices.sceneOptions());
   const double sceneMs = clock.milliseconds();
   s.width = options.width;
   s.height = options.height;

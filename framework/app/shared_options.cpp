@@ -17,6 +17,7 @@ void addSharedOptions(CLI::App& command, RenderChoices& choices) {
   addOption(command, setting::kSeed, choices.seed);
   addChoiceOption(command, setting::kFilter, choices.filter);
   addOption(command, setting::kFilterRadius, choices.filterRadius);
+  addOption(command, setting::kLightScale, choices.lightScale);
   command.add_flag("--strict", choices.strictScene,
                    "Refuse a scene that requires KHR_lights_punctual (Blender's lamps) instead of "
                    "loading it without its lamps and a warning");

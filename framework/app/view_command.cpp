@@ -57,6 +57,7 @@ Command addViewCommand(CLI::App& app) {
   addOption(*view, setting::kExposure, options->exposure);
   view->add_option("--display", options->display, "color, variance or rays (rays per sample)")
       ->capture_default_str();
+  addOption(*view, kScaleTop, options->scaleTop);
   view->add_flag("--show-help", options->showHelp, "Open with the keys-and-mouse help shown");
   view->add_flag("--headless", options->headless,
                  "Draw the viewer offscreen (OSMesa): no display needed");

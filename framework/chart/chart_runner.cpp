@@ -166,7 +166,7 @@ ChartData runChart(const ChartSpec& spec, const ChartRunOptions& options) {
     const std::string& path = spec.sceneOf(config);
     if (scenes.count(path)) continue;
     ChartScene& loaded = scenes[path];
-    loaded.scene = loadScene(path, {config.choices.strictScene});
+    loaded.scene = loadScene(path, config.choices.sceneOptions());
     loaded.tracer = std::make_unique<RayTracer>(loaded.scene);
     loaded.width = spec.width;
     loaded.height = loaded.scene.imageHeight(spec.width);

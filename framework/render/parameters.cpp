@@ -60,6 +60,12 @@ OptionSpec OptionSpec::keepingTheExpectedImage() const {
   return spec;
 }
 
+OptionSpec OptionSpec::asRecursionDepth() const {
+  OptionSpec spec = *this;
+  spec.isRecursionDepth = true;
+  return spec;
+}
+
 OptionSpec OptionSpec::toggle(std::string name, bool defaultValue, std::string help) {
   return {std::move(name), OptionKind::Toggle, defaultValue ? 1.0 : 0.0, 0.0, 1.0, {},
           std::move(help)};
@@ -77,6 +83,11 @@ OptionSpec OptionSpec::choice(std::string name, const std::string& defaultOption
 bool OptionSpec::accepts(double value) const {
   if (!std::isfinite(value) || value < minValue || value > maxValue) return false;
   return !isWholeNumber() || value == std::floor(value);
+}
+
+void OptionSpec::require(double value) const {
+  if (!accepts(value))
+    throw PathwayError(name + " must be in " + describeRange() + ", got " + format(value));
 }
 
 std::string OptionSpec::format(double value) const {

@@ -35,6 +35,8 @@ struct OptionSpec {
   // or only its noise and cost (a sample count, NEE, how lights are picked). References are
   // shared only across values of parameters that do not (charts, the viewer's error plot).
   bool changesExpectedImage = true;
+  // The recursion depth of a stage that recurses (the viewer's Up / Down keys step it).
+  bool isRecursionDepth = false;
 
   // (The bounds are doubles so that a range can reach 2^64, the seed's.)
   static OptionSpec integer(std::string name, long long defaultValue, double minValue,
@@ -47,6 +49,8 @@ struct OptionSpec {
 
   // This declaration, marked as one that changes only noise and cost.
   OptionSpec keepingTheExpectedImage() const;
+  // This declaration, marked as the stage's recursion depth.
+  OptionSpec asRecursionDepth() const;
   // This declaration with another default and help, for a command that uses the same setting
   // differently (the viewer refines towards a far larger spp than a render takes).
   OptionSpec withDefault(double value, std::string help) const;
@@ -62,6 +66,8 @@ struct OptionSpec {
   bool isWholeNumber() const { return kind != OptionKind::Real; }
   // True when `value` is one this parameter can take (in range; whole where it must be).
   bool accepts(double value) const;
+  // Throws PathwayError "<name> must be in <range>, got <value>" unless it accepts `value`.
+  void require(double value) const;
   // The value as a user writes it: "4", "0.25", "on", "power".
   std::string format(double value) const;
   // "[1, 1024]", "on or off", "area or power".

@@ -14,6 +14,11 @@ RecipeBuilder RenderChoices::builder() const {
   return builder;
 }
 
+SceneLoadOptions RenderChoices::sceneOptions() const {
+  setting::kLightScale.require(lightScale);
+  return {strictScene, lightScale};
+}
+
 RenderRecipe RenderChoices::recipe() const {
   return builder();
 }

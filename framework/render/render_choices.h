@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "render/recipe_builder.h"
+#include "scene/gltf_loader.h"
 
 namespace pathway {
 
@@ -20,6 +21,10 @@ struct RenderChoices {
   std::string filter = setting::kFilter.format(setting::kFilter.defaultValue);
   float filterRadius = setting::kFilterRadius.defaultAs<float>();  // 0: the filter's own radius
   bool strictScene = false;  // refuse a scene requiring lamps instead of ignoring them (--strict)
+  float lightScale = setting::kLightScale.defaultAs<float>();
+
+  // How the scene is to be loaded. Throws PathwayError for a light scale out of its range.
+  SceneLoadOptions sceneOptions() const;
 
   // The recipe these choices describe: integrator, parameters, earlier stages, sampler, seed and
   // filter (the other settings keep their defaults). Throws PathwayError naming the first unknown

@@ -3,24 +3,15 @@
 #include "core/error.h"
 
 namespace pathway {
-namespace {
-
-void require(const OptionSpec& spec, double value) {
-  if (!spec.accepts(value))
-    throw PathwayError(spec.name + " must be in " + spec.describeRange() + ", got " +
-                       spec.format(value));
-}
-
-}  // namespace
 
 void RenderSettings::check() const {
-  require(setting::kWidth, width);
-  require(setting::kHeight, height);
-  require(setting::kSamplesPerPixel, samplesPerPixel);
-  require(setting::kSamplesPerPass, samplesPerPass);
-  require(setting::kThreads, threads);
-  require(setting::kFilterRadius, filterRadius);
-  require(setting::kTileSize, tileSize);
+  setting::kWidth.require(width);
+  setting::kHeight.require(height);
+  setting::kSamplesPerPixel.require(samplesPerPixel);
+  setting::kSamplesPerPass.require(samplesPerPass);
+  setting::kThreads.require(threads);
+  setting::kFilterRadius.require(filterRadius);
+  setting::kTileSize.require(tileSize);
   if (endSample() > samplesPerPixel || firstSample() >= endSample())
     throw PathwayError("the sample range " + std::to_string(firstSample()) + ":" +
                        std::to_string(endSample()) + " must be a non-empty part of [0, " +

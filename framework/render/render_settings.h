@@ -40,6 +40,11 @@ inline const OptionSpec kTileSize = OptionSpec::integer(
 inline const OptionSpec kReferenceSamplesPerPixel = OptionSpec::integer(
     "reference-spp", 1024, 16, kSamplesPerPixel.maxValue,
     "Samples per pixel of the reference the viewer makes on demand (Make reference, key M)");
+// The lecture's shrinking light (scene/resize_lights.h): a scene setting, but every command that
+// loads a scene reads it.
+inline const OptionSpec kLightScale = OptionSpec::real(
+    "light-scale", 1.0, 0.01, 4.0,
+    "Resize every light about its centre by this factor at fixed power (its radiance / factor^2)");
 // The choices list their options in the order of the enums they stand for.
 inline const OptionSpec kFilter =
     OptionSpec::choice("filter", "box", filterTypeNames(), "Pixel filter");

@@ -15,6 +15,7 @@
 
 #include "core/error.h"
 #include "scene/gltf_detail.h"
+#include "scene/resize_lights.h"
 
 namespace pathway {
 namespace gltf {
@@ -357,6 +358,11 @@ Scene loadScene(const std::string& path, const SceneLoadOptions& options) {
   scene.sourcePath = path;
   gltf::addNodeTrees(model, gltf::rootNodes(model, chosen), scene, diagnostics);
   scene.background = gltf::background(chosen, diagnostics);
+  try {
+    resizeLights(scene, options.lightScale);
+  } catch (const PathwayError& error) {
+    diagnostics.fail(error.what());  // named with the file, as every load error is
+  }
   gltf::finish(scene, diagnostics);
   return scene;
 }

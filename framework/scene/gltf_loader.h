@@ -34,6 +34,8 @@ struct SceneLoadOptions {
   // its lamps, for users who would rather fix the file than render a scene lit differently
   // (the CLI's --strict).
   bool strict = false;
+  // Every light resized about its centre by this factor at fixed power (resize_lights.h).
+  float lightScale = 1.0f;
 };
 
 Scene loadScene(const std::string& path, const SceneLoadOptions& options = {});

@@ -40,7 +40,8 @@ inline const StageDefinition<Stage4Params>& stage4() {
                       .keepingTheExpectedImage()),
        stageParam(&Stage4Params::depth,
                   OptionSpec::integer("depth", 2, 0, 64,
-                                      "D: bounces; 0 shows emitters only, 1 adds direct light")),
+                                      "D: bounces; 0 shows emitters only, 1 adds direct light")
+                      .asRecursionDepth()),
        stageParam(&Stage4Params::maxRays,
                   OptionSpec::integer("max-rays", 1000000, 1, 1000000000000,
                                       "refuse settings that cast more rays per camera sample")

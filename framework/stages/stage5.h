@@ -35,7 +35,8 @@ inline const StageDefinition<Stage5Params>& stage5() {
       {stageParam(&Stage5Params::maxDepth,
                   OptionSpec::integer("max-depth", 5, -1, 1000,
                                       "most bounces a path takes (0: emitters only, 1: direct "
-                                      "light; -1: no limit)")),
+                                      "light; -1: no limit)")
+                      .asRecursionDepth()),
        stageParam(
            &Stage5Params::rouletteDepth,
            OptionSpec::integer("rr-depth", 3, 0, 1000, "bounces before Russian roulette starts")

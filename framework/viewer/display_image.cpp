@@ -40,11 +40,11 @@ float scaleTop(std::vector<float> values) {
   return values[k];
 }
 
-void falseColorImage(DisplayImage& out, const std::vector<float>& values, float scaleMax) {
+void falseColorImage(DisplayImage& out, const std::vector<float>& values, DisplayMode mode,
+                     float scaleMax) {
   out.scaleMax = scaleMax > 0.0f ? scaleMax : scaleTop(values);
-  const float inverse = out.scaleMax > 0.0f ? 1.0f / out.scaleMax : 0.0f;
   for (size_t i = 0; i < values.size(); ++i) {
-    falseColor(std::isfinite(values[i]) ? values[i] * inverse : 1.0f, &out.rgba[4 * i]);
+    falseColor(falseColorPosition(mode, values[i], out.scaleMax), &out.rgba[4 * i]);
     out.rgba[4 * i + 3] = 255;
   }
 }
@@ -66,6 +66,13 @@ std::vector<float> falseColorValues(const LaneFrame& frame, DisplayMode mode) {
 }
 
 }  // namespace
+
+float falseColorPosition(DisplayMode mode, float value, float top) {
+  if (!std::isfinite(value)) return 1.0f;
+  if (mode == DisplayMode::RayHeatmap)
+    return value > 1.0f && top > 1.0f ? std::log(value) / std::log(top) : 0.0f;
+  return top > 0.0f ? value / top : 0.0f;
+}
 
 void falseColor(float t, uint8_t rgb[3]) {
   // Viridis at nine evenly spaced stops, linearly interpolated.
@@ -105,7 +112,7 @@ DisplayImage makeDisplayImage(const LaneFrame& frame, DisplayMode mode, float ex
       for (int c = 0; c < 3; ++c) out.rgba[4 * i + c] = encode(color.pixels[i][c] * scale);
   } else {
     const std::vector<float> values = falseColorValues(frame, mode);
-    if (values.size() == count) falseColorImage(out, values, scaleMax);
+    if (values.size() == count) falseColorImage(out, values, mode, scaleMax);
   }
   return out;
 }

@@ -1,6 +1,7 @@
 // What the viewer shows of a lane's frame, as 8-bit RGBA for a texture: the colour image
 // (exposure, sRGB), the per-pixel variance of the estimate, or the rays traced per camera sample.
-// The last two are false-coloured and scaled to their own range, which is returned for the legend.
+// The last two are false-coloured and scaled to their own range, which is returned for the legend
+// (rays on a log scale: falseColorPosition).
 #pragma once
 
 #include <cstdint>
@@ -34,6 +35,11 @@ float sharedScaleTop(const LaneFrame* const* frames, int count, DisplayMode mode
 
 // Any linear RGB image (e.g. the grader's heatmap), sRGB-encoded, opaque.
 DisplayImage displayImageOf(const Image& image);
+
+// Where `value` sits on a false-colour scale topping out at `top`, in [0, 1] (clamped by
+// falseColor): linear for the variance; logarithmic from 1 for rays per camera sample, which
+// multiply with every bounce of naive recursion, so that each ×N is one equal step.
+float falseColorPosition(DisplayMode mode, float value, float top);
 
 // The false-colour scale (viridis) at t in [0, 1], as 8-bit RGB.
 void falseColor(float t, uint8_t rgb[3]);

@@ -69,6 +69,12 @@ std::vector<std::string> counters(const LaneFrame& frame, bool detailed) {
     std::snprintf(line, sizeof line, "rays: %.2f M primary, %.2f M secondary, %.2f M shadow",
                   c.primary * 1e-6, c.secondary * 1e-6, c.shadow * 1e-6);
     lines.push_back(line);
+    // One primary ray per camera sample: what the ray explosion multiplies.
+    if (c.primary > 0) {
+      std::snprintf(line, sizeof line, "%.1f rays per camera sample",
+                    static_cast<double>(c.totalRays()) / static_cast<double>(c.primary));
+      lines.push_back(line);
+    }
   }
   if (c.invalidSamples > 0)
     lines.push_back(std::to_string(c.invalidSamples) + " non-finite samples dropped");
@@ -76,8 +82,9 @@ std::vector<std::string> counters(const LaneFrame& frame, bool detailed) {
 }
 
 void legend(ImDrawList* draw, const Pane& pane, const PaneInfo& info) {
-  const char* title = info.mode == DisplayMode::Variance ? "variance of the pixel estimate"
-                                                         : "rays per camera sample";
+  const bool rays = info.mode == DisplayMode::RayHeatmap;
+  const char* title =
+      rays ? "rays per camera sample (log scale)" : "variance of the pixel estimate";
   const float barWidth = std::max(180.0f, ImGui::CalcTextSize(title).x);
   const float barHeight = 12.0f, margin = 10.0f;
   const ImVec2 min(pane.max.x - barWidth - margin, pane.max.y - barHeight - margin - 20.0f);
@@ -94,8 +101,8 @@ void legend(ImDrawList* draw, const Pane& pane, const PaneInfo& info) {
   }
   draw->AddText(ImVec2(min.x, min.y - 18), kTextColor, title);
   char top[32];
-  std::snprintf(top, sizeof top, "%.3g", info.scaleMax);
-  draw->AddText(ImVec2(min.x, min.y + barHeight + 2), kTextColor, "0");
+  std::snprintf(top, sizeof top, "%.4g", info.scaleMax);
+  draw->AddText(ImVec2(min.x, min.y + barHeight + 2), kTextColor, rays ? "1" : "0");
   draw->AddText(ImVec2(min.x + barWidth - ImGui::CalcTextSize(top).x, min.y + barHeight + 2),
                 kTextColor, top);
 }

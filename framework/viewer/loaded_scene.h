@@ -3,6 +3,7 @@
 // scene, so the pair lives in one heap object that never moves.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -15,6 +16,7 @@ namespace pathway {
 struct LoadedScene {
   Scene scene;
   std::unique_ptr<RayTracer> tracer;
+  uint64_t contentHash = 0;  // Scene::contentHash(), once: it tells two loads of a file apart
 
   // Throws PathwayError naming the file and the problem.
   static std::shared_ptr<const LoadedScene> load(const std::string& path,

@@ -200,6 +200,8 @@ PanelAction drawPanel(ViewerState& state, PanelText& text, const PanelStatus& st
         ImGui::TextDisabled("%s", text.sceneMessage.c_str());
       ImGui::PopTextWrapPos();
     }
+    if (optionWidget("light size", setting::kLightScale, state.sceneOptions.lightScale, "%.3fx"))
+      action = PanelAction::ResizeLights;
     if (ImGui::Button("Reset camera (R)")) action = PanelAction::ResetCamera;
   }
 

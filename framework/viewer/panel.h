@@ -47,6 +47,7 @@ struct PanelStatus {
 enum class PanelAction {
   None,
   OpenScene,
+  ResizeLights,  // load the scene again with the light size the widget set
   SaveExr,
   SavePng,
   Screenshot,

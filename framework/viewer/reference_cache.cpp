@@ -48,7 +48,7 @@ std::string referenceCacheKey(const LaneFrame& frame, const LoadedScene& scene, 
   std::ostringstream key;
   key.precision(9);  // every float exactly
   key << (reference ? reference->name : frame.integrator) << " " << frame.params.describe()
-      << " scene=" << hexDigits(scene.scene.contentHash()) << " camera=" << c.position.x << ","
+      << " scene=" << hexDigits(scene.contentHash) << " camera=" << c.position.x << ","
       << c.position.y << "," << c.position.z << "/" << c.lookAt.x << "," << c.lookAt.y << ","
       << c.lookAt.z << "/" << c.up.x << "," << c.up.y << "," << c.up.z << "/" << c.yfov
       << " size=" << s.width << "x" << s.height << " filter=" << filterTypeName(s.filter) << ":"

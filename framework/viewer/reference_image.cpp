@@ -28,7 +28,11 @@ std::string radiusText(float radius) {
 }  // namespace
 
 ReferenceView viewOf(const LaneFrame& frame) {
-  return {frame.scenePath, frame.camera, frame.settings.filter, frame.settings.filterRadiusPixels(),
+  return {frame.scenePath,
+          frame.sceneContent,
+          frame.camera,
+          frame.settings.filter,
+          frame.settings.filterRadiusPixels(),
           frame.params};
 }
 
@@ -91,6 +95,8 @@ std::string referenceProblem(const ReferenceImage& reference, const LaneFrame& f
   std::string why;
   if (view.scenePath != made.scenePath)
     why = "another scene is open";
+  else if (view.sceneContent != made.sceneContent)
+    why = "the scene changed (the light size, or the file opened again)";
   else if (view.camera != made.camera)
     why = "the camera moved";
   else if (!sameSize)

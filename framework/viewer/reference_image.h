@@ -20,6 +20,7 @@ namespace pathway {
 // What decides the expected image besides the integrator.
 struct ReferenceView {
   std::string scenePath;
+  uint64_t sceneContent = 0;  // the same file with its lights resized is another scene
   CameraPose camera;
   FilterType filter = FilterType::Box;
   float filterRadius = 0.0f;  // in pixels, 0 decoded to the filter's own

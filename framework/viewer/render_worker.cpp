@@ -205,6 +205,7 @@ void RenderWorker::publish(size_t index) {
   auto frame = std::make_shared<LaneFrame>();
   frame->job = jobId_;
   frame->scenePath = scene_ ? scene_->scene.sourcePath : "";
+  frame->sceneContent = scene_ ? scene_->contentHash : 0;
   frame->camera = camera_;
   frame->integrator = lane.integrator;
   frame->todos = lane.todos;

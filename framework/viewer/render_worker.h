@@ -63,6 +63,7 @@ struct WorkerJob {
 struct LaneFrame {
   uint64_t job = 0;  // the submit() it belongs to
   std::string scenePath;
+  uint64_t sceneContent = 0;  // LoadedScene::contentHash: the lights' size changes it
   CameraPose camera;
   std::string integrator;
   ParamValues params;  // the values used, every declared parameter

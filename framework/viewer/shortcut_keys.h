@@ -17,6 +17,7 @@ struct ShortcutEffects {
   bool screenshot = false;
   bool grade = false;          // grade the left pane's image against the reference (again: hide it)
   bool makeReference = false;  // make the error plot's reference (again: cancel it)
+  bool resizeLights = false;   // the light size changed: load the scene again
 };
 
 // Acts on one press; Shift sends the pane keys (T, 1-5) to the right pane in the split view.
@@ -42,6 +43,10 @@ inline void applyKeyPress(ViewerState& state, const KeyPress& press, ShortcutEff
   if (key == GLFW_KEY_F12) effects.screenshot = true;
   if (key == GLFW_KEY_G) effects.grade = true;
   if (key == GLFW_KEY_M) effects.makeReference = true;
+  if (key == GLFW_KEY_UP) stepRecursionDepth(state, 1);
+  if (key == GLFW_KEY_DOWN) stepRecursionDepth(state, -1);
+  if (key == GLFW_KEY_LEFT_BRACKET && scaleLightSize(state, 0.5f)) effects.resizeLights = true;
+  if (key == GLFW_KEY_RIGHT_BRACKET && scaleLightSize(state, 2.0f)) effects.resizeLights = true;
 }
 
 // Acts on every press, in the order they came.

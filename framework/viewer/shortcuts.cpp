@@ -22,6 +22,8 @@ const Shortcut kShortcuts[] = {
     {"G", "grade the image against the reference; shows where it differs (again: hide)"},
     {"M", "make a reference for the error plot (relMSE against time); again: cancel"},
     {"+ / -", "exposure up / down one stop"},
+    {"Up / Down", "recursion depth of stages 4 and 5 one deeper / shallower (both panes)"},
+    {"[ / ]", "lights half / twice as large, at the same power"},
     {"V", "split view on / off"},
     {"B", "split view: equal time / equal ray count"},
     {"Space", "pause / resume rendering"},

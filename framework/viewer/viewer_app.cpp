@@ -83,7 +83,7 @@ void Viewer::pollSceneLoad() {
     return;
   try {
     scene_ = loading_.get();
-    camera_ = OrbitCamera(scene_->scene);
+    if (!loadingKeepsCamera_) camera_ = OrbitCamera(scene_->scene);
     text_.sceneFailed = false;
     text_.sceneMessage = "loaded " + std::to_string(scene_->scene.triangleCount()) + " triangles";
     for (const std::string& warning : scene_->scene.warnings) text_.sceneMessage += "\n" + warning;
@@ -91,6 +91,25 @@ void Viewer::pollSceneLoad() {
     text_.sceneFailed = true;
     text_.sceneMessage = error.what();
   }
+  if (resizeLightsNext_ && scene_) startSceneLoad(scene_->scene.sourcePath, true);
+  resizeLightsNext_ = false;
+}
+
+void Viewer::resizeLights() {
+  // A drag moves the slider every frame: one load at a time, the newest size last.
+  if (loading_.valid())
+    resizeLightsNext_ = true;
+  else if (scene_)
+    startSceneLoad(scene_->scene.sourcePath, true);
+}
+
+void Viewer::startSceneLoad(const std::string& path, bool keepCamera) {
+  text_.sceneMessage = "loading " + path + "...";
+  text_.sceneFailed = false;
+  loadingKeepsCamera_ = keepCamera;
+  // Loading and building the BVH can take a while for big scenes: not on the UI thread.
+  const SceneLoadOptions load = state_.sceneOptions;
+  loading_ = std::async(std::launch::async, [path, load] { return LoadedScene::load(path, load); });
 }
 
 void Viewer::submitIfChanged(const ImageLayout& layout) {
@@ -115,9 +134,11 @@ bool Viewer::panesCurrent() const {
 }
 
 float Viewer::sharedScale(const std::shared_ptr<const LaneFrame>* frames) {
+  if (state_.display == DisplayMode::Color) return 0.0f;
+  if (state_.scaleTop > 0.0f) return state_.scaleTop;
   // Side by side, the false-colour modes share one scale: with one each, a pane with 1e-7 times
   // the other's variance would look just as noisy.
-  if (!state_.split || state_.display == DisplayMode::Color) return 0.0f;
+  if (!state_.split) return 0.0f;
   // Worked out again only when a pane has a new image or the display changed.
   if (frames[0] == topOf_[0] && frames[1] == topOf_[1] && topMode_ == state_.display)
     return sharedTop_;
@@ -268,6 +289,7 @@ void Viewer::frame(const std::string& screenshotPath) {
   if (keys.resetCamera) camera_.reset();
   if (keys.grade) toggleGrade();
   if (keys.makeReference) toggleMakeReference();
+  if (keys.resizeLights) resizeLights();
   pollGrade();
   if (keys.screenshot) pendingScreenshot_ = text_.savePrefix + "_screenshot.png";
 
@@ -291,16 +313,12 @@ void Viewer::frame(const std::string& screenshotPath) {
   status.sceneLoading = loading_.valid();
   status.fixedSize = state_.fixedWidth > 0;
   switch (drawPanel(state_, text_, status)) {
-    case PanelAction::OpenScene: {
-      const std::string path = text_.sceneInput;
-      text_.sceneMessage = "loading " + path + "...";
-      text_.sceneFailed = false;
-      // Loading and building the BVH can take a while for big scenes: not on the UI thread.
-      const SceneLoadOptions load{state_.strictScene};
-      loading_ =
-          std::async(std::launch::async, [path, load] { return LoadedScene::load(path, load); });
+    case PanelAction::OpenScene:
+      startSceneLoad(text_.sceneInput, false);
       break;
-    }
+    case PanelAction::ResizeLights:
+      resizeLights();
+      break;
     case PanelAction::SaveExr:
       saveImages(".exr");
       break;

@@ -13,6 +13,7 @@
 #include "viewer/frame_grade.h"
 #include "viewer/gl_display.h"
 #include "viewer/image_view.h"
+#include "viewer/initial_state.h"
 #include "viewer/panel.h"
 #include "viewer/platform.h"
 #include "viewer/reference_image.h"
@@ -22,9 +23,6 @@
 #include "viewer/viewer_state.h"
 
 namespace pathway {
-
-// The state the options describe; throws PathwayError on unknown names or bad parameters.
-ViewerState initialState(const ViewerOptions& options);
 
 class Viewer {
  public:
@@ -57,6 +55,10 @@ class Viewer {
 
  private:
   void pollSceneLoad();
+  // Loads `path` with the state's scene options beside the UI thread (pollSceneLoad takes it).
+  void startSceneLoad(const std::string& path, bool keepCamera);
+  // The scene again, its lights at the state's size, seen from where the camera is.
+  void resizeLights();
   void submitIfChanged(const ImageLayout& layout);
   // The split view's one false-colour scale for these frames (0: each pane its own).
   float sharedScale(const std::shared_ptr<const LaneFrame>* frames);
@@ -71,6 +73,8 @@ class Viewer {
   PanelText text_;
   std::shared_ptr<const LoadedScene> scene_;
   std::future<std::shared_ptr<const LoadedScene>> loading_;
+  bool loadingKeepsCamera_ = false;  // the same scene with its lights resized: same view
+  bool resizeLightsNext_ = false;    // the light size moved during a load: load again after it
   OrbitCamera camera_;
   CameraMouse mouse_;
   std::unique_ptr<GlTexture> textures_[2];

@@ -138,6 +138,40 @@ UiFigures measureUi(const ViewerOptions& options, std::shared_ptr<const LoadedSc
   return f;
 }
 
+// A demo as the lecturer starts it, headless: seconds from start (scene loaded, viewer made) to
+// the first frame showing every pane's first image, and to the first error-plot point (its
+// reference asked for then, as the demo does: from the cache when --prepare-demos made it).
+struct DemoStart {
+  double firstImage = 0.0;
+  double errorPlot = 0.0;  // 0: the demo has no plot, or none within the time allowed
+  std::string reference;   // where the plot's reference came from
+};
+
+DemoStart measureDemoStart(const ViewerOptions& options) {
+  DemoStart f;
+  const double start = now();
+  auto scene = LoadedScene::load(options.choices.scene, options.choices.sceneOptions());
+  Viewer viewer(createOsmesaPlatform(options.windowWidth, options.windowHeight),
+                initialState(options), scene);
+  bool referenceAsked = false;
+  while (now() - start < 600.0) {
+    viewer.frame();
+    if (f.firstImage == 0.0 && viewer.panesCurrent() && viewer.imagesShown() > 0) {
+      f.firstImage = now() - start;
+      if (!options.makeReference) break;
+      viewer.toggleMakeReference();
+      referenceAsked = true;
+    }
+    if (referenceAsked && !viewer.errors(0).points().empty()) {
+      f.errorPlot = now() - start;
+      f.reference = viewer.referenceSource();
+      break;
+    }
+    viewer.waitForChange(true);
+  }
+  return f;
+}
+
 }  // namespace
 
 int runViewerBenchmark(const ViewerOptions& given) {
@@ -154,7 +188,7 @@ int runViewerBenchmark(const ViewerOptions& given) {
     if (fastest != names.back()) names.push_back(fastest);  // what the reference pane shows
   }
   if (names.empty()) names.push_back(setting::kIntegrator);  // a student handout has no references
-  auto scene = LoadedScene::load(options.choices.scene, {options.choices.strictScene});
+  auto scene = LoadedScene::load(options.choices.scene, options.choices.sceneOptions());
 
   std::printf(
       "viewer benchmark: %s, %dx%d render, %u spp per pass, %.1f s each, %u hardware threads\n",
@@ -208,7 +242,7 @@ int runViewerBenchmark(const ViewerOptions& given) {
     // The reference is made beside the panes (a demo without --prepare-demos), and not kept.
     demoOptions.cacheReferences = false;
     auto demoScene =
-        LoadedScene::load(demoOptions.choices.scene, {demoOptions.choices.strictScene});
+        LoadedScene::load(demoOptions.choices.scene, demoOptions.choices.sceneOptions());
     const UiFigures all = measureUi(demoOptions, demoScene, window, false);
     const UiFigures fewer = measureUi(demoOptions, demoScene, window, true);
     std::printf("%-15s | %7.1f %10.1f %9.1f | %7.1f %10.1f %9.1f\n", demo.name.c_str(),
@@ -221,6 +255,28 @@ int runViewerBenchmark(const ViewerOptions& given) {
       "presses were queued. Demos: %dx%d window, split panes following it, their "
       "reference being made\n",
       given.windowWidth, given.windowHeight);
+
+  // Ready for class: each demo as `pathway view --demo` starts it (its own render size, the
+  // reference cache on).
+  std::printf("\nDemos as they start (headless, %dx%d window):\n", given.windowWidth,
+              given.windowHeight);
+  std::printf("%-16s | %14s | %15s | %s\n", "demo", "first image s", "error plot s",
+              "the plot's reference");
+  for (const ViewerDemo& demo : viewerDemos()) {
+    ViewerOptions demoOptions = given;
+    applyViewerDemo(demo.name, demoOptions);
+    const DemoStart f = measureDemoStart(demoOptions);
+    char plot[32] = "-";
+    if (demo.makeReference)
+      std::snprintf(plot, sizeof plot, f.errorPlot > 0.0 ? "%.2f" : "none", f.errorPlot);
+    std::printf("%-16s | %14.2f | %15s | %s\n", demo.name.c_str(), f.firstImage, plot,
+                f.reference.c_str());
+    std::fflush(stdout);
+  }
+  std::printf(
+      "first image: start -> a frame showing every pane's first image; error plot: start -> "
+      "its first point (run `pathway view --prepare-demos` first, or the reference is made "
+      "on the spot)\n");
   return 0;
 }
 

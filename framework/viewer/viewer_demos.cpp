@@ -29,7 +29,9 @@ std::vector<ViewerDemo> declareDemos() {
                           "ray) beside one 4D integral (Sobol' 4D points), at equal rays, with "
                           "their error plots",
                           "cornell_box.gltf", "stage2@ref", {"ao-rays=4"});
-  demo->keys = "B equal rays / equal time; M make the reference again; D variance";
+  demo->keys =
+      "left pane's ao-rays slider: the eye:AO split, a knob 4D does not have; B equal rays / "
+      "equal time; M make the reference again; D variance";
   demo->splitIntegrator = "stage3@ref";
   demo->balance = "rays";
   demo->sampler = "independent";
@@ -47,22 +49,33 @@ std::vector<ViewerDemo> declareDemos() {
   demo->splitParams = {"branching=3", "depth=3"};
   demo->makeReference = true;
 
-  // The error plot's reference is made by the left pane: the one with NEE, far less noisy.
+  // The Cornell box's light, in view, at half its side and the same power: [ and ] halve and
+  // double it, and the pane without NEE falls apart as it shrinks while the other barely
+  // changes. The error plot's reference is made by the left pane: the one with NEE.
   demo = &add("nee-small-light",
-              "path tracing with and without next-event estimation under a small light, at "
-              "equal rays",
-              "small_light.gltf", "stage5@ref", {"nee=on"});
-  demo->keys = "D variance, one colour scale for both panes; B equal rays / equal time";
+              "path tracing with and without next-event estimation as the light shrinks at "
+              "fixed power, at equal rays",
+              "cornell_box.gltf", "stage5@ref", {"nee=on"});
+  demo->keys =
+      "[ / ] light half / twice as large (same power); D variance, one colour scale for both "
+      "panes; B equal rays / equal time";
   demo->splitIntegrator = "stage5@ref";
   demo->splitParams = {"nee=off"};
   demo->balance = "rays";
+  demo->lightScale = 0.5f;
   demo->makeReference = true;
 
+  // A fixed log scale up to naive recursion's count at depth 5 ((4^6 - 1) / 3 rays): every step
+  // of Up moves the left pane's colour one step up it, while path tracing's barely moves.
   demo = &add("ray-explosion",
-              "rays per camera sample of naive recursion (4 rays per hit, depth 3) as a heatmap",
-              "cornell_box.gltf", "stage4@ref", {"branching=4", "depth=3"});
-  demo->keys = "D colour / variance / rays per sample; 5 path tracing, to compare its rays";
+              "rays per camera sample of naive recursion (4 rays per hit) beside path tracing, "
+              "on one log scale, as the depth steps up",
+              "cornell_box.gltf", "stage4@ref", {"branching=4", "depth=1"});
+  demo->keys = "Up / Down depth of both panes; D colour / variance / rays per sample";
+  demo->splitIntegrator = "stage5@ref";
+  demo->splitParams = {"max-depth=1"};
   demo->display = "rays";
+  demo->scaleTop = 1365.0f;
 
   // The box filter beside it, with the same seed and spp: what the lobes buy.
   demo = &add("mitchell-lobes",
@@ -99,6 +112,8 @@ void applyViewerDemo(const std::string& name, ViewerOptions& options) {
     options.splitFilter = demo.splitFilter;
     options.balance = demo.balance;
     options.display = demo.display;
+    options.scaleTop = demo.scaleTop;
+    options.choices.lightScale = demo.lightScale;
     options.makeReference = options.makeReference || demo.makeReference;
     options.cacheReferences = true;
     if (options.width == 0 && options.height == 0) options.width = demo.width;
@@ -124,6 +139,10 @@ std::string describeViewerDemo(const ViewerDemo& demo) {
     line += " --balance " + demo.balance;
   }
   if (demo.display != "color") line += " --display " + demo.display;
+  if (demo.scaleTop != kScaleTop.defaultValue)
+    line += " --scale-top " + kScaleTop.format(demo.scaleTop);
+  if (demo.lightScale != setting::kLightScale.defaultValue)
+    line += " --light-scale " + setting::kLightScale.format(demo.lightScale);
   if (!demo.filter.empty()) line += " --filter " + demo.filter;
   if (demo.spp > 0) line += " --spp " + std::to_string(demo.spp);
   line += " --width " + std::to_string(demo.width);

@@ -26,6 +26,8 @@ struct ViewerDemo {
   std::string splitSampler;      // the right pane's own; empty: the left pane's
   std::string splitFilter;       // the right pane's own; empty: the left pane's
   std::string display = "color";
+  float scaleTop = kScaleTop.defaultAs<float>();  // a fixed top for the false-colour display
+  float lightScale = setting::kLightScale.defaultAs<float>();  // the lights' size at the start
   bool makeReference = false;  // make the error plot's reference once the first image is in
   std::string filter;          // empty: the default (box)
   uint32_t spp = 0;            // the spp target; 0: the viewer's default

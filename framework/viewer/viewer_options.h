@@ -15,6 +15,12 @@ namespace pathway {
 inline const OptionSpec kViewerSamplesPerPixel =
     setting::kSamplesPerPixel.withDefault(4096, "Samples per pixel at which rendering stops");
 
+// A fixed top for the false-colour displays, so that a count stepping up shows as a colour moving
+// up (the ray explosion) instead of a scale that follows it.
+inline const OptionSpec kScaleTop = OptionSpec::real(
+    "scale-top", 0.0, 0.0, 1e30,
+    "Top of the variance and rays-per-sample colour scale (0: the images' own, 99th percentile)");
+
 struct ViewerOptions {
   RenderChoices choices;        // scene, integrator, parameters, sampler, seed, filter
   std::string splitIntegrator;  // non-empty: split view with this on the right
@@ -28,6 +34,7 @@ struct ViewerOptions {
   uint32_t samplesPerPass = setting::kSamplesPerPass.defaultAs<uint32_t>();
   float exposure = setting::kExposure.defaultAs<float>();
   std::string display = "color";
+  float scaleTop = kScaleTop.defaultAs<float>();
   bool showHelp = false;  // open with the keys-and-mouse overlay
   bool headless = false;
   int frames = 0;          // > 0: draw this many frames, then exit

@@ -62,6 +62,30 @@ void setParamValue(ViewerState& state, int lane, const IntegratorInfo& info, con
   state.params[lane][{info.stage, spec.name}] = value;
 }
 
+void stepRecursionDepth(ViewerState& state, int steps) {
+  for (int lane = 0; lane < (state.split ? 2 : 1); ++lane) {
+    const IntegratorInfo* info = find(state.integrator[lane]);
+    if (!info) continue;
+    for (const OptionSpec& spec : info->params) {
+      if (!spec.isRecursionDepth) continue;
+      // -1 (no limit) is not a step on the way from 0 up.
+      const double value = std::clamp(paramValue(state, lane, *info, spec) + steps,
+                                      std::max(0.0, spec.minValue), spec.maxValue);
+      setParamValue(state, lane, *info, spec, value);
+    }
+  }
+}
+
+bool scaleLightSize(ViewerState& state, float factor) {
+  const OptionSpec& spec = setting::kLightScale;
+  float& scale = state.sceneOptions.lightScale;
+  const float scaled =
+      std::clamp(static_cast<double>(scale) * factor, spec.minValue, spec.maxValue);
+  if (scaled == scale) return false;
+  scale = scaled;
+  return true;
+}
+
 void selectIntegrator(ViewerState& state, int lane, const std::string& name) {
   const IntegratorInfo* info = find(name);
   if (!info) return;

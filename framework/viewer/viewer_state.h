@@ -14,6 +14,7 @@
 #include "render/integrator_registry.h"
 #include "render/render_settings.h"
 #include "sampling/sampler.h"
+#include "scene/gltf_loader.h"
 #include "viewer/display_image.h"
 #include "viewer/render_worker.h"
 
@@ -38,6 +39,7 @@ struct ViewerState {
 
   float exposure = 0.0f;  // stops
   DisplayMode display = DisplayMode::Color;
+  float scaleTop = 0.0f;  // a fixed top for the false-colour displays (kScaleTop); 0: their own
 
   bool split = false;
   Balance balance = Balance::EqualTime;
@@ -58,7 +60,8 @@ struct ViewerState {
 
   bool paused = false;
   bool showHelp = false;
-  bool strictScene = false;  // scenes opened from the panel: refuse required lamps (--strict)
+  // How scenes load: --strict and --light-scale, the light size widget editing the latter.
+  SceneLoadOptions sceneOptions;
 };
 
 // The pane's value of a parameter: the one set for its stage, else the declared default.
@@ -67,6 +70,13 @@ double paramValue(const ViewerState& state, int lane, const IntegratorInfo& info
 // Throws PathwayError (naming the parameter and its range) for a value it does not accept.
 void setParamValue(ViewerState& state, int lane, const IntegratorInfo& info, const OptionSpec& spec,
                    double value);
+
+// Steps the recursion depth (OptionSpec::isRecursionDepth) of every pane shown by `steps`, kept
+// within [max(0, lowest), highest]; panes whose integrator does not recurse are left alone.
+void stepRecursionDepth(ViewerState& state, int steps);
+// Multiplies the lights' size (setting::kLightScale) by `factor`, kept within its range. Returns
+// true when it changed (the scene must then load again).
+bool scaleLightSize(ViewerState& state, float factor);
 
 // Chooses an integrator for a pane; the left pane's choice also brings its stage's usual sampler.
 void selectIntegrator(ViewerState& state, int lane, const std::string& name);
