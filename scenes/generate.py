@@ -36,9 +36,14 @@ from scene_catalog import SCENES, grid, open_plane, small_light, \
 from scene_checks import check_scene_file  # noqa: E402
 
 
-def generate_all(directory=HERE):
+def write_scenes(directory):
+    """Writes every committed scene into `directory` (the same bytes on every run)."""
     for file, make in SCENES.items():
         write_gltf(os.path.join(directory, file), make())
+
+
+def generate_all(directory=HERE):
+    write_scenes(directory)
     print("wrote %d scenes to %s" % (len(SCENES), directory))
     for file in SCENES:
         check_scene_file(os.path.join(directory, file))
