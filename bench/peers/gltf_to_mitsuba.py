@@ -3,7 +3,8 @@
 Pathway's model is small: triangles in world space, a Lambertian albedo (baseColorFactor), an
 emission (emissiveFactor x KHR_materials_emissive_strength) that is one-sided unless the material
 is doubleSided, a pinhole camera and a constant background. This module reads exactly that from
-a .gltf (external .bin or data-URI buffers) or .glb file, with numpy only (`read_gltf`), and turns
+a .gltf (external .bin or data-URI buffers) or .glb file with scenes/gltf_io.py, the project's
+glTF reader, into numpy arrays (`read_gltf`), and turns
 it into a Mitsuba scene dict (`mitsuba_scene`) whose meshes are `mi.Mesh` objects filled from
 numpy buffers. Whatever Mitsuba could not render the way Pathway does (textures, double-sided
 emitters, sparse accessors, required extensions) is refused with a message naming it; what
@@ -12,15 +13,16 @@ ignored here too, with a warning, so that both renderers see the same scene.
 
     python gltf_to_mitsuba.py scene.gltf   # prints what was read (needs numpy only)
 """
-import base64
-import json
 import math
 import pathlib
-import struct
 import sys
 from dataclasses import dataclass, field
 
 import numpy as np
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "scenes"))
+from gltf_io import (EMISSIVE_STRENGTH, FLOAT, LAMPS, GltfError, accessor_array,  # noqa: E402
+                     default_scene, load_gltf, walk_nodes)
 
 
 class SceneError(Exception):
@@ -66,84 +68,13 @@ class GltfScene:
 
 # -------------------------------------------------------------------------------- file reading
 
-_COMPONENTS = {5120: np.int8, 5121: np.uint8, 5122: np.int16, 5123: np.uint16, 5125: np.uint32,
-               5126: np.float32}
-_WIDTH = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT4": 16}
-_SUPPORTED_EXTENSIONS = {"KHR_materials_emissive_strength"}
-_LAMPS = "KHR_lights_punctual"
-
-
-def _read_document(path):
-    """The JSON document and its buffers (bytes), from .gltf or .glb."""
-    raw = path.read_bytes()
-    binary_chunk = None
-    if raw[:4] == b"glTF":
-        # GLB: 12-byte header, then a JSON chunk and an optional BIN chunk.
-        offset, chunks = 12, {}
-        while offset + 8 <= len(raw):
-            length, kind = struct.unpack_from("<II", raw, offset)
-            chunks[kind] = raw[offset + 8:offset + 8 + length]
-            offset += 8 + length
-        document = json.loads(chunks[0x4E4F534A])
-        binary_chunk = chunks.get(0x004E4942)
-    else:
-        document = json.loads(raw)
-    buffers = []
-    for i, buffer in enumerate(document.get("buffers", [])):
-        uri = buffer.get("uri")
-        if uri is None:
-            if binary_chunk is None:
-                raise SceneError(f"buffer {i} has no uri and the file has no GLB binary chunk")
-            buffers.append(binary_chunk)
-        elif uri.startswith("data:"):
-            buffers.append(base64.b64decode(uri.split(",", 1)[1]))
-        else:
-            from urllib.parse import unquote
-            file = path.parent / unquote(uri)
-            if not file.is_file():
-                raise SceneError(f"buffer {i}: {file} not found")
-            buffers.append(file.read_bytes())
-    return document, buffers
-
-
 def _accessor(document, buffers, index, what):
-    """Accessor `index` as an (count, width) numpy array, honouring byteStride."""
-    accessor = document["accessors"][index]
-    if "sparse" in accessor:
-        raise SceneError(f"{what}: sparse accessors are not supported")
-    if "bufferView" not in accessor:
-        raise SceneError(f"{what} has no bufferView")
-    dtype = np.dtype(_COMPONENTS[accessor["componentType"]]).newbyteorder("<")
-    width, count = _WIDTH[accessor["type"]], accessor["count"]
-    view = document["bufferViews"][accessor["bufferView"]]
-    data = buffers[view["buffer"]]
-    start = view.get("byteOffset", 0) + accessor.get("byteOffset", 0)
-    element = dtype.itemsize * width
-    stride = view.get("byteStride", element)
-    if count and start + stride * (count - 1) + element > view.get("byteOffset", 0) + view["byteLength"]:
-        raise SceneError(f"{what} reads past its bufferView")
-    rows = np.ndarray((count, width), dtype=dtype, buffer=data, offset=start,
-                      strides=(stride, dtype.itemsize))
-    return np.array(rows)  # a packed copy
-
-
-def _node_matrix(node):
-    """The node's local transform: `matrix` (column-major) or translation * rotation * scale."""
-    if "matrix" in node:
-        return np.array(node["matrix"], dtype=np.float64).reshape(4, 4).T
-    t = np.eye(4)
-    t[:3, 3] = node.get("translation", [0.0, 0.0, 0.0])
-    x, y, z, w = node.get("rotation", [0.0, 0.0, 0.0, 1.0])
-    n = math.sqrt(x * x + y * y + z * z + w * w)
-    if not n > 0.0:
-        raise SceneError(f"node {node.get('name', '')!r} rotation is not a rotation")
-    x, y, z, w = x / n, y / n, z / n, w / n
-    r = np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-                  [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-                  [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
-    s = np.diag(node.get("scale", [1.0, 1.0, 1.0]))
-    t[:3, :3] = r @ s
-    return t
+    """Accessor `index` as a (count, width) numpy array (byteStride honoured by gltf_io)."""
+    try:
+        values, width = accessor_array(document, buffers, index)
+    except GltfError as error:
+        raise SceneError(f"{what}: {error}") from error
+    return np.frombuffer(values, dtype=values.typecode).reshape(-1, width)
 
 
 def _material(document, index, warn):
@@ -161,7 +92,7 @@ def _material(document, index, warn):
     if pbr.get("metallicFactor", 1.0) != 0.0:
         warn("metallicFactor", "ignoring metallicFactor (Pathway's materials are Lambertian)")
     albedo = tuple(float(v) for v in pbr.get("baseColorFactor", [1, 1, 1, 1])[:3])
-    strength = m.get("extensions", {}).get("KHR_materials_emissive_strength", {})
+    strength = m.get("extensions", {}).get(EMISSIVE_STRENGTH, {})
     scale = float(strength.get("emissiveStrength", 1.0))
     emission = tuple(float(v) * scale for v in m.get("emissiveFactor", [0, 0, 0]))
     material = Material(name, albedo, emission, bool(m.get("doubleSided", False)))
@@ -198,36 +129,20 @@ def read_gltf(path):
 
 def _read_gltf(path):
     try:
-        document, buffers = _read_document(path)
-    except (OSError, ValueError, KeyError) as error:
+        document, buffers = load_gltf(str(path), strict=False)  # lamps: warned about below
+    except (OSError, GltfError) as error:
         raise SceneError(f"{path}: cannot read: {error}") from error
     warnings = {}
 
     def warn(key, message):
         warnings.setdefault(key, f"{path}: {message}")
 
-    required = set(document.get("extensionsRequired", []))
-    unsupported = required - _SUPPORTED_EXTENSIONS - {_LAMPS}
-    if unsupported:
-        raise SceneError(f"{path} requires unsupported extension(s) {sorted(unsupported)}")
-    if _LAMPS in required or _LAMPS in document.get("extensions", {}):
-        warn(_LAMPS, "ignoring KHR_lights_punctual lamps, as Pathway does (emissive meshes only)")
-
-    scenes = document.get("scenes", [])
-    if scenes:
-        chosen = scenes[document.get("scene", 0)]
-        roots = chosen.get("nodes", [])
-    else:  # no scenes: every node that is nobody's child
-        chosen = {}
-        children = {c for n in document.get("nodes", []) for c in n.get("children", [])}
-        roots = [i for i in range(len(document.get("nodes", []))) if i not in children]
+    if LAMPS in document.get("extensionsRequired", []) or LAMPS in document.get("extensions", {}):
+        warn(LAMPS, "ignoring KHR_lights_punctual lamps, as Pathway does (emissive meshes only)")
 
     materials, primitives, camera = {}, [], None
-    pending = [(root, np.eye(4)) for root in reversed(roots)]
-    while pending:  # depth first, parents before children, as Pathway's loader walks
-        index, parent = pending.pop()
-        node = document["nodes"][index]
-        to_world = parent @ _node_matrix(node)
+    for node, world in walk_nodes(document):  # the order Pathway's loader walks
+        to_world = np.array(world)
         if "mesh" in node:
             mesh = document["meshes"][node["mesh"]]
             for p, primitive in enumerate(mesh.get("primitives", [])):
@@ -240,7 +155,7 @@ def _read_gltf(path):
                 if "POSITION" not in primitive.get("attributes", {}):
                     raise SceneError(f"{path}: {where} has no POSITION")
                 position = primitive["attributes"]["POSITION"]
-                if document["accessors"][position].get("componentType") != 5126:
+                if document["accessors"][position].get("componentType") != FLOAT:
                     raise SceneError(f"{where}: POSITION must be floats")
                 local = _accessor(document, buffers, position, where)
                 if "indices" in primitive:
@@ -272,13 +187,11 @@ def _read_gltf(path):
                                 float(spec["perspective"]["yfov"]))
             else:
                 warn("orthographic", "ignoring orthographic cameras (not supported)")
-        for child in reversed(node.get("children", [])):
-            pending.append((child, to_world))
 
     if not primitives:
         raise SceneError(f"{path}: the scene has no triangles")
-    background = tuple(float(v) for v in chosen.get("extras", {}).get("pathway_background",
-                                                                       [0.0, 0.0, 0.0]))
+    background = tuple(float(v) for v in default_scene(document)[0].get("extras", {}).get(
+        "pathway_background", [0.0, 0.0, 0.0]))
     if len(background) != 3 or not all(math.isfinite(v) and v >= 0 for v in background):
         raise SceneError(f"{path}: pathway_background must be 3 finite non-negative numbers")
     return GltfScene(str(path), primitives, camera or _default_camera(primitives), background,

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Sets up what the peers benchmark (bench/peers/peers.py) needs, installing only what is missing,
 # and prints the libLLVM path to give Dr.Jit as DRJIT_LIBLLVM_PATH:
-#  - build/peers/venv (Debian's python3, so python3-venv) with mitsuba==3.9.1 and numpy;
+#  - Debian's numpy and scipy (python3-numpy, python3-scipy: the statistics use scipy.stats);
+#  - build/peers/venv (Debian's python3, so python3-venv) that sees them (--system-site-packages),
+#    with mitsuba==3.9.1 from PyPI, which Debian does not package;
 #  - Debian's libLLVM for Mitsuba's llvm_ad_rgb variant. Dr.Jit 1.5 (Mitsuba 3.9.1) refuses LLVM
 #    older than 15, and Debian's LLVM 15 and 16 abort while compiling Mitsuba's path tracer on
 #    x86-64 ("Cannot select ... fminimum": no instruction selection for llvm.minimum), so this
@@ -30,14 +32,20 @@ apt_install() {
 }
 
 [[ -x $python ]] || fail "$python not found: this needs Debian's python3"
+"$python" -c "import numpy, scipy" 2>/dev/null || apt_install python3-numpy python3-scipy
+# A venv made before it had to see Debian's packages (it held PyPI's numpy) is made again.
+if [[ -x $venv/bin/python ]] && ! grep -qx "include-system-site-packages = true" "$venv/pyvenv.cfg"; then
+  say "removing $venv: it was made without Debian's packages (--system-site-packages)"
+  rm -rf "$venv"
+fi
 if [[ ! -x $venv/bin/python ]]; then
   "$python" -c "import venv, ensurepip" 2>/dev/null || apt_install python3-venv
   say "creating $venv"
-  "$python" -m venv "$venv" || fail "could not create $venv"
+  "$python" -m venv --system-site-packages "$venv" || fail "could not create $venv"
 fi
-if ! "$venv/bin/python" -c "import numpy, mitsuba; assert mitsuba.__version__ == '$mitsuba_version'" 2>/dev/null; then
-  say "installing mitsuba==$mitsuba_version and numpy into $venv"
-  "$venv/bin/python" -m pip install --quiet "mitsuba==$mitsuba_version" numpy >&2 ||
+if ! "$venv/bin/python" -c "import mitsuba; assert mitsuba.__version__ == '$mitsuba_version'" 2>/dev/null; then
+  say "installing mitsuba==$mitsuba_version into $venv"
+  "$venv/bin/python" -m pip install --quiet "mitsuba==$mitsuba_version" >&2 ||
     fail "pip could not install mitsuba==$mitsuba_version (is PyPI reachable?)"
 fi
 

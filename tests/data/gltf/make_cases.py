@@ -13,14 +13,14 @@ cases.json records the outcome the C++ loader should reproduce.
 import json
 import math
 import os
-import struct
 import sys
 
 sys.dont_write_bytecode = True  # keep scenes/__pycache__ out of the tree
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "..", "scenes"))
-from generate import checkerboard_png, data_uri, f32_json, pack  # noqa: E402
-from gltf_check import GltfError, read_scene  # noqa: E402
+from gltf_check import read_scene  # noqa: E402
+from gltf_io import GltfError, data_uri, f32_json, glb_bytes, gltf_text, pack  # noqa: E402
+from png_encoder import checkerboard_png  # noqa: E402
 
 GENERATOR = "Pathway tests/data/gltf/make_cases.py"
 FLOAT, UBYTE, USHORT, UINT = 5126, 5121, 5123, 5125
@@ -313,17 +313,6 @@ def required_extension():
 # Writing
 # --------------------------------------------------------------------------------------------
 
-def glb(doc, blob):
-    """GLB container: 12-byte header, JSON chunk padded with spaces, BIN chunk padded with 0."""
-    text = json.dumps(doc, separators=(",", ":"), allow_nan=False).encode("ascii")
-    assert len(text) % 4 and len(blob) % 4, "binary.glb should exercise both paddings"
-    text += b" " * (-len(text) % 4)
-    binary = bytes(blob) + b"\0" * (-len(blob) % 4)
-    chunks = (struct.pack("<II", len(text), 0x4E4F534A) + text
-              + struct.pack("<II", len(binary), 0x004E4942) + binary)
-    return struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks
-
-
 def binary():
     """One triangle, uint16 indices: 36 + 6 = 42 bytes of BIN data, padded to 44."""
     d = Doc()
@@ -333,11 +322,6 @@ def binary():
     doc = d.finish(None)
     doc["buffers"][0]["name"] = "bin"  # makes the compact JSON 745 bytes: 3 spaces of padding
     return doc, bytes(d.blob)
-
-
-def json_text(doc):
-    # allow_nan=False: no NaN / Infinity ever reaches the JSON (only nan_positions' buffer has one)
-    return json.dumps(doc, indent=2, allow_nan=False) + "\n"
 
 
 def write(name, data):
@@ -387,17 +371,19 @@ def main():
     outcomes = {}
     for name, make in VALID.items():
         doc, extra = make()
-        write(name, json_text(doc))
+        write(name, gltf_text(doc))
         for suffix, content in extra.items():
             if suffix == "":  # expected-values sidecar
                 write(name.replace(".gltf", ".expected.json"), json.dumps(content, indent=2) + "\n")
             else:
                 write(suffix, content)
     doc, blob = binary()
-    write("binary.glb", glb(doc, blob))
+    # binary.glb should exercise both paddings: the JSON chunk's spaces, the BIN chunk's zeros.
+    assert len(json.dumps(doc, separators=(",", ":"))) % 4 and len(blob) % 4
+    write("binary.glb", glb_bytes(doc, blob))
     for name, (make, _, _) in MALFORMED.items():
-        write(name, json_text(make()[0]))
-    good = json_text(quad_doc().finish())
+        write(name, gltf_text(make()[0]))
+    good = gltf_text(quad_doc().finish())
     write("bad_json.gltf", good[:len(good) // 2])  # truncated mid-document
 
     # Read everything back, the way the C++ loader does by default (not strict).
