@@ -1,5 +1,5 @@
-// Image files: EXR through OpenEXR, PNG through OpenImageIO in a module loaded on first use
-// (io/raster.h).
+// Image files: EXR through OpenEXR; PNG written through libpng and read through OpenImageIO, in a
+// module loaded on first use (io/raster.h).
 // EXR keeps everything the grader needs: linear RGB, per-pixel variance and filter weight, and the
 // render settings and counters as metadata. PNG is for looking at: exposure, sRGB, 8 bits.
 // Files are written to a temporary name and renamed, so a failed write never leaves a broken file.
