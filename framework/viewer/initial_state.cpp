@@ -1,5 +1,8 @@
 #include "viewer/initial_state.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/error.h"
 #include "render/integrator_registry.h"
 
@@ -64,6 +67,16 @@ ViewerState initialState(const ViewerOptions& options) {
   state.fixedWidth = options.width;
   state.fixedHeight = options.height;
   return state;
+}
+
+void completeRenderSize(ViewerState& state, const Scene& scene) {
+  if ((state.fixedWidth > 0) == (state.fixedHeight > 0)) return;
+  const float aspect =
+      scene.camera && scene.camera->aspectRatio ? *scene.camera->aspectRatio : 16.0f / 9.0f;
+  if (state.fixedHeight == 0)
+    state.fixedHeight = std::max(1, static_cast<int>(std::lround(state.fixedWidth / aspect)));
+  else
+    state.fixedWidth = std::max(1, static_cast<int>(std::lround(state.fixedHeight * aspect)));
 }
 
 }  // namespace pathway

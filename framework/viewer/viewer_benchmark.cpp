@@ -151,8 +151,10 @@ DemoStart measureDemoStart(const ViewerOptions& options) {
   DemoStart f;
   const double start = now();
   auto scene = LoadedScene::load(options.choices.scene, options.choices.sceneOptions());
-  Viewer viewer(createOsmesaPlatform(options.windowWidth, options.windowHeight),
-                initialState(options), scene);
+  ViewerState state = initialState(options);
+  completeRenderSize(state, scene->scene);  // the demo's width, as `pathway view --demo` has it
+  Viewer viewer(createOsmesaPlatform(options.windowWidth, options.windowHeight), std::move(state),
+                scene);
   bool referenceAsked = false;
   while (now() - start < 600.0) {
     viewer.frame();

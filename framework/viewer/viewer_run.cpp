@@ -26,16 +26,7 @@ int runViewer(const ViewerOptions& options) {
   if (options.benchmark) return runViewerBenchmark(options);
   ViewerState state = initialState(options);  // bad names fail before any window opens
   auto scene = LoadedScene::load(options.choices.scene, options.choices.sceneOptions());
-  if ((state.fixedWidth > 0) != (state.fixedHeight > 0)) {
-    // One side given: the other from the scene camera's aspect ratio, as `pathway render` does.
-    const float aspect = scene->scene.camera && scene->scene.camera->aspectRatio
-                             ? *scene->scene.camera->aspectRatio
-                             : 16.0f / 9.0f;
-    if (state.fixedHeight == 0)
-      state.fixedHeight = std::max(1, static_cast<int>(std::lround(state.fixedWidth / aspect)));
-    else
-      state.fixedWidth = std::max(1, static_cast<int>(std::lround(state.fixedHeight * aspect)));
-  }
+  completeRenderSize(state, scene->scene);
   std::optional<ReferenceImage> reference;
   if (!options.reference.empty()) {
     // A file holds no camera: it is taken to show the scene's own, where the viewer starts.
