@@ -8,8 +8,8 @@
 #include <chrono>
 #include <fstream>
 
-#include "render/recipe_builder.h"
-#include "render/render_session.h"
+#include "engine/recipe_builder.h"
+#include "engine/render_session.h"
 #include "sampling/pcg32.h"
 
 namespace pathway::bench {

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "bench_kit.h"
+#include "engine/render_choices.h"
 #include "raw_path_tracer.h"
-#include "render/render_choices.h"
 #include "scene/gltf_loader.h"
 #include "stages/stage5.h"
 

@@ -9,8 +9,8 @@
 #include "bench_kit.h"
 #include "core/error.h"
 #include "core/temporary_folder.h"
-#include "render/recipe_builder.h"
-#include "render/render_session.h"
+#include "engine/recipe_builder.h"
+#include "engine/render_session.h"
 #include "scene/gltf_loader.h"
 #include "spawn.h"
 

@@ -18,8 +18,8 @@
 
 #include "bench_kit.h"
 #include "core/child_process.h"
-#include "render/recipe_builder.h"
-#include "render/render_session.h"
+#include "engine/recipe_builder.h"
+#include "engine/render_session.h"
 #include "sampling/pcg32.h"
 #include "scene/embree.h"
 #include "scene/gltf_loader.h"

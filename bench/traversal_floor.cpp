@@ -11,9 +11,9 @@
 
 #include "bench_kit.h"
 #include "core/error.h"
+#include "engine/recipe_builder.h"
+#include "engine/render_session.h"
 #include "render/integrator_registry.h"
-#include "render/recipe_builder.h"
-#include "render/render_session.h"
 #include "scene/gltf_loader.h"
 
 namespace pathway::bench {

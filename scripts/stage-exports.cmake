@@ -1,7 +1,7 @@
 # Writes OUTPUT, the linker's dynamic list for the pathway program: the framework symbols that
 # stage libraries may use, found as the undefined symbols of OBJECTS (the stage files of
-# solutions/, and framework/render/stage_api_uses.cpp, which uses everything render/stage_api.h
-# documents) and of LIBRARY when it exists (a handout's compiled reference).
+# solutions/, and framework/stage_loading/stage_api_uses.cpp, which uses everything
+# render/stage_api.h documents) and of LIBRARY when it exists (a handout's compiled reference).
 # The program exports these and nothing else, so a stage file cannot call the rest of the
 # framework (such as the image readers): its library fails to load, naming the symbol.
 #   cmake -DNM=nm "-DOBJECTS=a.o;b.o" -DLIBRARY=lib.so -DOUTPUT=list -P this file

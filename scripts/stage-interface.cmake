@@ -3,7 +3,8 @@
 # declarations (framework/stages/*.h: the parameters stage files read), with their paths
 # relative to framework/, so the same framework hashes the same wherever it is unpacked. A compiled
 # reference library is sealed with this hash and loaded only by a program with the same one
-# (framework/render/reference_library.h). The build runs it whenever a framework header changes:
+# (framework/stage_loading/reference_library.h). The build runs it whenever a framework header
+# changes:
 #   cmake -DCOMPILER=c++ -DFRAMEWORK=.../framework -DDEFINITIONS="A;B" -DOUTPUT=... -P this file
 set(defines "")
 foreach(definition IN LISTS DEFINITIONS)

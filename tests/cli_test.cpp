@@ -163,8 +163,8 @@ TEST_F(Cli, RenderWritesPngAndExrWithSettingsAndCounters) {
 }
 
 // Every student stage is there: the program loads each from its own library
-// (render/student_stages.h), which finds every stage API function in the program (in a handout
-// too, where no built-in stage calls them) and nothing else.
+// (stage_loading/student_stages.h), which finds every stage API function in the program (in a
+// handout too, where no built-in stage calls them) and nothing else.
 TEST_F(Cli, ListDescribesEveryIntegrator) {
   const Outcome outcome = runPathway("render --list");
   EXPECT_EQ(outcome.exitCode, 0);

@@ -15,9 +15,9 @@
 
 #include "chart/image_error.h"
 #include "core/error.h"
+#include "engine/recipe_builder.h"
 #include "io/image_io.h"
 #include "render/integrator_registry.h"
-#include "render/recipe_builder.h"
 #include "run_command.h"
 #include "test_scenes.h"
 #include "viewer/reference_image.h"

@@ -6,9 +6,9 @@
 
 #include <cmath>
 
+#include "engine/recipe_builder.h"
+#include "engine/render_session.h"
 #include "film/pixel_filter.h"
-#include "render/recipe_builder.h"
-#include "render/render_session.h"
 #include "stage_under_test.h"
 #include "test_scenes.h"
 

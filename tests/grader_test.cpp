@@ -257,8 +257,9 @@ TEST_P(GraderMutant, IsJudgedByItsImage) {
       EXPECT_NE(line.output.find("while rendering pixel"), std::string::npos) << line.output;
   }
 
-  // A handout's self-grade runs on the compiled reference library (render/reference_library.h)
-  // where the autograder has the reference built in: the same verdict on every case.
+  // A handout's self-grade runs on the compiled reference library
+  // (stage_loading/reference_library.h) where the autograder has the reference built in: the same
+  // verdict on every case.
   const std::vector<ResultLine> builtIn = lines;
   const std::string report = (dir_ / "report-library").string();
   const test::CommandOutcome library =

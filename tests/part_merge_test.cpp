@@ -10,8 +10,8 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "engine/render_session.h"
 #include "io/partial_film.h"
-#include "render/render_session.h"
 #include "run_command.h"
 #include "stage_under_test.h"
 #include "test_scenes.h"

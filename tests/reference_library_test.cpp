@@ -1,9 +1,9 @@
-// The reference stages compiled into a library (render/reference_library.h), as a handout ships
-// them: sealed for this platform and framework, no symbol table; a library that is missing, cut
-// short, corrupt, or made for another platform or framework version is refused with one message
+// The reference stages compiled into a library (stage_loading/reference_library.h), as a handout
+// ships them: sealed for this platform and framework, no symbol table; a library that is missing,
+// cut short, corrupt, or made for another platform or framework version is refused with one message
 // naming the file and why, and the program works on without it; and in the full repository, the
 // library renders every stage bit for bit as the built-in reference does.
-#include "render/reference_library.h"
+#include "stage_loading/reference_library.h"
 
 #include <gtest/gtest.h>
 

@@ -5,10 +5,10 @@
 
 #include "chart/chart_spec.h"
 #include "core/error.h"
+#include "engine/recipe_builder.h"
 #include "render/integrator_registry.h"
-#include "render/recipe_builder.h"
-#include "render/stage_catalog.h"
 #include "stage_under_test.h"
+#include "stages/stage_catalog.h"
 #include "viewer/viewer_options.h"
 
 namespace pathway {

@@ -1,6 +1,6 @@
 #include "render_helpers.h"
 
-#include "render/recipe_builder.h"
+#include "engine/recipe_builder.h"
 #include "scene/ray_tracer.h"
 
 namespace pathway::test {

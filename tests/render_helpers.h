@@ -6,7 +6,7 @@
 #include <map>
 #include <string>
 
-#include "render/render_session.h"
+#include "engine/render_session.h"
 
 namespace pathway::test {
 

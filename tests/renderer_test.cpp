@@ -8,8 +8,8 @@
 #include <numeric>
 #include <thread>
 
-#include "render/recipe_builder.h"
-#include "render/render_session.h"
+#include "engine/recipe_builder.h"
+#include "engine/render_session.h"
 #include "scene/gltf_loader.h"
 #include "stage_under_test.h"
 #include "test_scenes.h"

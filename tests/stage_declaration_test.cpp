@@ -5,14 +5,16 @@
 
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "core/error.h"
-#include "render/stage_catalog.h"
 #include "stages/stage1.h"
 #include "stages/stage2.h"
 #include "stages/stage3.h"
 #include "stages/stage4.h"
 #include "stages/stage5.h"
+#include "stages/stage_catalog.h"
 
 namespace pathway {
 namespace {
@@ -56,6 +58,24 @@ std::string trimmed(const std::string& text) {
   const size_t begin = text.find_first_not_of(' ');
   const size_t end = text.find_last_not_of(' ');
   return begin == std::string::npos ? "" : text.substr(begin, end - begin + 1);
+}
+
+// The grader's difference patterns and the viewer's depth keys find the parameters they vary by
+// role (render/parameters.h), so each role must sit on the parameter that does that job.
+TEST(StageDeclaration, EachRoleIsDeclaredWhereTheGraderAndViewerLookForIt) {
+  auto named = [](int stage, OptionRole role) -> std::string {
+    const OptionSpec* option = optionWithRole(stageDeclaration(stage).params, role);
+    return option ? option->name : "";
+  };
+  const std::vector<std::string> reach = {"", "ao-distance", "ao-distance", "", ""};
+  const std::vector<std::string> depth = {"", "", "", "depth", "max-depth"};
+  const std::vector<std::string> nee = {"", "", "", "", "nee"};
+  for (int stage = 1; stage <= kStageCount; ++stage) {
+    SCOPED_TRACE("stage " + std::to_string(stage));
+    EXPECT_EQ(named(stage, OptionRole::AoReach), reach[stage - 1]);
+    EXPECT_EQ(named(stage, OptionRole::RecursionDepth), depth[stage - 1]);
+    EXPECT_EQ(named(stage, OptionRole::NextEventEstimation), nee[stage - 1]);
+  }
 }
 
 TEST(StageDeclaration, EachHeadersParameterTableMatchesItsDeclarations) {

@@ -47,7 +47,8 @@ constexpr bool kFullRepository = false;
 #endif
 
 // Whether the reference stages are there: built in, or a handout's compiled library
-// (render/reference_library.h, loaded by tests/reference_stages.cpp as the program loads it).
+// (stage_loading/reference_library.h, loaded by tests/reference_stages.cpp as the program loads
+// it).
 inline bool haveReference() {
   return findStageIntegrator(1, Variant::Reference) != nullptr;
 }

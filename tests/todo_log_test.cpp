@@ -5,8 +5,8 @@
 
 #include <thread>
 
-#include "render/recipe_builder.h"
-#include "render/render_session.h"
+#include "engine/recipe_builder.h"
+#include "engine/render_session.h"
 #include "scene/gltf_loader.h"
 #include "stage_under_test.h"
 

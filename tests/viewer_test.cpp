@@ -345,7 +345,7 @@ TEST(ViewerKeys, DepthAndLightSizeStepWithinTheirRanges) {
   const IntegratorInfo& path = findIntegrator("stage5@ref");
   auto depth = [&](int lane, const IntegratorInfo& info) {
     for (const OptionSpec& spec : info.params)
-      if (spec.isRecursionDepth) return paramValue(state, lane, info, spec);
+      if (spec.role == OptionRole::RecursionDepth) return paramValue(state, lane, info, spec);
     ADD_FAILURE() << info.name << " declares no recursion depth";
     return -2.0;
   };

@@ -15,11 +15,11 @@
 #include <vector>
 
 #include "cluster/command_lines.h"
+#include "engine/recipe_builder.h"
+#include "engine/render_session.h"
+#include "engine/render_settings.h"
 #include "grade/grading_cases.h"
 #include "render/integrator_registry.h"
-#include "render/recipe_builder.h"
-#include "render/render_session.h"
-#include "render/render_settings.h"
 #include "scene/gltf_loader.h"
 #include "stage_under_test.h"
 #include "test_scenes.h"

@@ -17,7 +17,7 @@
 #include "app/grade_modes.h"
 #include "app/shared_options.h"
 #include "core/error.h"
-#include "render/stage_catalog.h"
+#include "stages/stage_catalog.h"
 
 namespace pathway {
 namespace {

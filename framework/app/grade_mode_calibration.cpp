@@ -6,8 +6,8 @@
 
 #include "app/grade_modes.h"
 #include "grade/grade_calibration.h"
-#include "render/stage_library.h"
-#include "render/student_stages.h"
+#include "stage_loading/stage_library.h"
+#include "stage_loading/student_stages.h"
 
 namespace pathway {
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "app/grade_modes.h"
+#include "core/number_format.h"
 #include "grade/grading_reference.h"
 #include "grade/image_comparison.h"
 
@@ -22,9 +23,7 @@ std::string smallestBias(const GradingCase& c, const std::string& references) {
   const double bias =
       smallestDetectableBias(reference.mean, reference.blockVariance, reference.record.blockSize,
                              reference.record.replicates, reference.record.blockCorrelation);
-  char text[32];
-  std::snprintf(text, sizeof text, std::isfinite(bias) ? "%.2f%%" : "-", 100.0 * bias);
-  return text;
+  return std::isfinite(bias) ? formatNumber("%.2f%%", 100.0 * bias) : "-";
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 #include "core/temporary_folder.h"
 #include "grade/class_grading.h"
 #include "render/integrator_registry.h"
-#include "render/reference_library.h"
+#include "stage_loading/reference_library.h"
 
 namespace pathway {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <set>
 
-#include "render/stage_catalog.h"
+#include "stages/stage_catalog.h"
 
 namespace pathway {
 

@@ -9,8 +9,8 @@
 #include "core/error.h"
 #include "core/sandboxed_command.h"
 #include "grade/case_render_job.h"
-#include "render/reference_library.h"
-#include "render/student_stages.h"
+#include "stage_loading/reference_library.h"
+#include "stage_loading/student_stages.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Pathway: from pixel filtering to path tracing, one stage at a time."};
@@ -54,8 +54,8 @@ int main(int argc, char** argv) {
   try {
     for (const pathway::Command& command : commands) {
       if (!command.app->parsed()) continue;
-      // The commands that render the student's stages load them (render/student_stages.h); the
-      // grader builds the stage files itself and loads them only in its sandboxed child.
+      // The commands that render the student's stages load them (stage_loading/student_stages.h);
+      // the grader builds the stage files itself and loads them only in its sandboxed child.
       const std::string name = command.app->get_name();
       if (name == "render" || name == "view" || name == "chart") pathway::loadStudentStages();
       return command.run();

@@ -1,10 +1,10 @@
 // `pathway reference`: where this program's reference stages (stageN@ref) come from, and whether
-// a compiled reference library can be loaded here (render/reference_library.h).
+// a compiled reference library can be loaded here (stage_loading/reference_library.h).
 #include <cstdio>
 #include <string>
 
 #include "app/commands.h"
-#include "render/reference_library.h"
+#include "stage_loading/reference_library.h"
 
 namespace pathway {
 namespace {

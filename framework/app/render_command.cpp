@@ -9,9 +9,9 @@
 #include "app/progress_bar.h"
 #include "app/shared_options.h"
 #include "core/error.h"
+#include "engine/render_session.h"
 #include "io/partial_film.h"
 #include "io/raster_files.h"
-#include "render/render_session.h"
 #include "scene/gltf_loader.h"
 
 namespace pathway {

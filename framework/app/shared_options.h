@@ -1,5 +1,5 @@
 // The options `pathway render` and `pathway view` share, and the helpers that make every
-// command's option from its declaration (render/render_settings.h, chart/chart_spec.h), so that
+// command's option from its declaration (engine/render_settings.h, chart/chart_spec.h), so that
 // names, help texts, defaults and ranges cannot drift apart.
 #pragma once
 
@@ -7,8 +7,8 @@
 #include <limits>
 #include <string>
 
-#include "render/render_choices.h"
-#include "render/render_settings.h"
+#include "engine/render_choices.h"
+#include "engine/render_settings.h"
 
 namespace pathway {
 

@@ -13,8 +13,8 @@
 #include "core/error.h"
 #include "core/stable_hash.h"
 #include "core/text_output.h"
+#include "engine/render_session.h"
 #include "io/image_io.h"
-#include "render/render_session.h"
 #include "scene/gltf_loader.h"
 
 namespace pathway {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "render/render_choices.h"
-#include "render/render_settings.h"
+#include "engine/render_choices.h"
+#include "engine/render_settings.h"
 
 namespace pathway {
 

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <functional>
 #include <sstream>
 
+#include "core/number_format.h"
 #include "core/text_output.h"
 
 namespace pathway {
@@ -67,16 +67,11 @@ std::optional<ReadOff> readOff(std::vector<ChartPoint> points, double at,
 }
 
 std::string number(double value) {
-  if (!std::isfinite(value)) return "null";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
-  return text;
+  return std::isfinite(value) ? formatNumber("%.6g", value) : "null";
 }
 // Three significant digits, for tables people read.
 std::string brief(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", value);
-  return text;
+  return formatNumber("%.3g", value);
 }
 std::string number(const std::optional<double>& value) {
   return value ? number(*value) : "null";

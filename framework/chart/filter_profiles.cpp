@@ -1,9 +1,9 @@
 #include "chart/filter_profiles.h"
 
-#include <cstdio>
 #include <vector>
 
 #include "core/error.h"
+#include "core/number_format.h"
 #include "film/pixel_filter.h"
 #include "render/stage_kit.h"
 
@@ -33,13 +33,8 @@ std::string filterProfilesCsv(Variant* used) {
   constexpr int kSteps = 1000;  // fine enough to show the box's jump as a vertical edge
   for (int i = 0; i <= kSteps; ++i) {
     const float x = -2.5f + 5.0f * float(i) / kSteps;
-    char line[128];
-    std::snprintf(line, sizeof line, "%.4f", x);
-    csv += line;
-    for (const PixelFilter& filter : filters) {
-      std::snprintf(line, sizeof line, ",%.7g", filter.evaluate1D(x));
-      csv += line;
-    }
+    csv += formatNumber("%.4f", x);
+    for (const PixelFilter& filter : filters) csv += formatNumber(",%.7g", filter.evaluate1D(x));
     csv += "\n";
   }
   return csv;

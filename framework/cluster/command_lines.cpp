@@ -1,7 +1,7 @@
 #include "cluster/command_lines.h"
 
+#include "engine/render_settings.h"
 #include "render/integrator_registry.h"
-#include "render/render_settings.h"
 
 namespace pathway {
 namespace {

@@ -1,7 +1,7 @@
 // The `pathway` commands a cluster job runs (app/cluster_command.cpp), one struct each with
 // toArguments(): the command line after the program's path. Written here, and only here, so no
 // file strings together another command's flags by hand; the settings' flags come from their
-// declarations (render/render_settings.h), as the commands themselves declare them.
+// declarations (engine/render_settings.h), as the commands themselves declare them.
 #pragma once
 
 #include <cstdint>
@@ -14,8 +14,8 @@ namespace pathway {
 // split by samples (render --samples), or the check that every task's options pass (--check:
 // loads the scene and checks them, renders nothing).
 // The render's arguments with a reference stage (-i stageN@ref, -istageN@ref, --integrator
-// stageN@ref or --integrator=stageN@ref) replaced by its wavefront version where it has one: the same
-// estimator and numbers, traced many paths at a time (`pathway cluster render` without
+// stageN@ref or --integrator=stageN@ref) replaced by its wavefront version where it has one: the
+// same estimator and numbers, traced many paths at a time (`pathway cluster render` without
 // --single-ray).
 std::vector<std::string> withFastestReference(std::vector<std::string> renderArguments);
 

@@ -12,11 +12,11 @@
 
 #include "core/child_process.h"
 #include "core/error.h"
+#include "engine/pixel_in_progress.h"
 #include "grade/jackknife_render.h"
 #include "io/image_io.h"
-#include "render/pixel_in_progress.h"
-#include "render/stage_library.h"
 #include "scene/gltf_loader.h"
+#include "stage_loading/stage_library.h"
 
 namespace pathway {
 namespace {

@@ -31,8 +31,8 @@ struct CaseRenderJob {
   bool together = false;        // the student's earlier stages instead of the reference's
   bool gradeReference = false;  // the reference stages themselves instead of the student's
   bool singleRay = false;       // with gradeReference: stageN@ref even where stageN@fast exists
-  // Stage libraries (render/stage_library.h) loaded before rendering, in this order. The parent
-  // gives absolute paths: the child may resolve a relative one differently.
+  // Stage libraries (stage_loading/stage_library.h) loaded before rendering, in this order. The
+  // parent gives absolute paths: the child may resolve a relative one differently.
   std::vector<std::string> stageLibraries;
   // How the child shuts itself in before it loads them (core/sandbox.h).
   SandboxMode sandbox = SandboxMode::Auto;
@@ -60,7 +60,7 @@ bool operator==(const CaseRenderJob& a, const CaseRenderJob& b);
 // and says so on its first line of output, loads the stage libraries, and renders the job's cases
 // in order, each into job.imagePath(case) and each within its own time limit (past it, SIGALRM
 // ends the process: the parent then knows which case hung from the images that exist). Reports
-// the pixels in progress when a signal ends it (render/pixel_in_progress.h). Throws PathwayError
+// the pixels in progress when a signal ends it (engine/pixel_in_progress.h). Throws PathwayError
 // when a stage a case needs is in none of the job's libraries.
 void runCaseRenderJob(const CaseRenderJob& job);
 

@@ -10,7 +10,7 @@
 
 #include "core/error.h"
 #include "grade/submission.h"
-#include "render/stage_catalog.h"
+#include "stages/stage_catalog.h"
 
 namespace pathway {
 namespace {

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+
+#include "core/number_format.h"
 
 namespace pathway {
 namespace {
@@ -10,13 +11,6 @@ namespace {
 // Moves searched: up to kShiftSteps steps of 1/kShiftStepsPerPixel pixel each way.
 constexpr int kShiftSteps = 4;
 constexpr int kShiftStepsPerPixel = 4;
-
-// One number as printf formats it.
-std::string formatted(const char* format, double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, format, value);
-  return text;
-}
 
 // Finite differences at pixel level, clamped at the borders.
 Image derivative(const Image& r, const std::function<Color(const Image&, int, int)>& stencil) {
@@ -43,13 +37,13 @@ Vector tileVector(const Image& image, const std::vector<TileBounds>& tiles) {
 }  // namespace
 
 std::string percent(double fraction) {
-  return formatted("%.1f%%", 100.0 * std::fabs(fraction));
+  return formatNumber("%.1f%%", 100.0 * std::fabs(fraction));
 }
 std::string ratio(double value) {
-  return formatted("%.2f", value);
+  return formatNumber("%.2f", value);
 }
 std::string signedNumber(double value) {
-  return formatted("%+.2f", value);
+  return formatNumber("%+.2f", value);
 }
 
 namespace {

@@ -3,10 +3,7 @@
 #include "grade/difference_diagnosis.h"
 #include "grade/image_comparison.h"
 #include "scene/camera.h"
-#include "stages/stage2.h"
-#include "stages/stage3.h"
-#include "stages/stage4.h"
-#include "stages/stage5.h"
+#include "stages/stage_catalog.h"
 
 namespace pathway {
 namespace {
@@ -83,58 +80,41 @@ std::map<std::string, Image> makeDifferencePatterns(const GradingCase& gradingCa
   if (!renderVariance.pixels.empty()) patterns[pattern::kRenderVariance] = renderVariance;
   patterns[pattern::kEscaped] = escapedBackground(gradingCase, tracer);
   const uint64_t seed = kPatternSeed;
-  if (gradingCase.stage == 1) {
-    // Central differences half a pixel each way: the image moved by one pixel, to first order,
-    // at the scale where filters act (a pixel-level gradient misreads fine stripes).
-    const float half = 0.5f;
-    patterns[pattern::kMovedRight] =
-        difference(renderVariant(gradingCase, tracer, tracing, {}, seed, Vec2(half, 0.0f)),
-                   renderVariant(gradingCase, tracer, tracing, {}, seed + 1, Vec2(-half, 0.0f)));
-    patterns[pattern::kMovedDown] =
-        difference(renderVariant(gradingCase, tracer, tracing, {}, seed + 2, Vec2(0.0f, half)),
-                   renderVariant(gradingCase, tracer, tracing, {}, seed + 3, Vec2(0.0f, -half)));
-    // The filter a quarter wider minus a fifth narrower: its support, to first order in ln r.
-    const float radius = gradingCase.filterRadius > 0.0f ? gradingCase.filterRadius
-                                                         : naturalFilterRadius(gradingCase.filter);
-    GradingCase wider = gradingCase, narrower = gradingCase;
-    wider.filterRadius = 1.25f * radius;
-    narrower.filterRadius = 0.8f * radius;
-    patterns[pattern::kWiderFilter] =
-        difference(renderVariant(wider, tracer, tracing, {}, seed + 4),
-                   renderVariant(narrower, tracer, tracing, {}, seed + 5));
-  } else if (gradingCase.stage == 2 || gradingCase.stage == 3) {
-    // The smallest AO distance there is: nothing blocks such a ray, so this is the image without
+  // What to vary comes from the stage's declared parameters (render/parameters.h, OptionRole).
+  const std::vector<OptionSpec>& declared = stageDeclaration(gradingCase.stage).params;
+  const OptionSpec* reach = optionWithRole(declared, OptionRole::AoReach);
+  const OptionSpec* depth = optionWithRole(declared, OptionRole::RecursionDepth);
+  const OptionSpec* nee = optionWithRole(declared, OptionRole::NextEventEstimation);
+  const ParamValues values =
+      gradingCase.recipe(Variant::Reference, EarlierStages::Own, seed).params;
+  if (reach) {
+    // The shortest reach there is: nothing blocks such a ray, so this is the image without
     // occlusion (1 on every surface, the background elsewhere).
-    const Image unoccluded =
-        renderVariant(gradingCase, tracer, tracing, {{"ao-distance", "1e-6"}}, seed);
+    const Image unoccluded = renderVariant(gradingCase, tracer, tracing,
+                                           {{reach->name, reach->format(reach->minValue)}}, seed);
     patterns[pattern::kOccluded] = difference(unoccluded, referenceMean);
-    // The same AO with longer rays: how the image changes when the AO distance is misread.
-    const ParamValues values =
-        gradingCase.recipe(Variant::Reference, EarlierStages::Own, seed).params;
-    const double d = gradingCase.stage == 2 ? stage2().read(values).aoDistance
-                                            : stage3().read(values).aoDistance;
-    if (d < 1e5) {
+    // The same AO with longer rays: how the image changes when the reach is misread.
+    const double d = values.number(reach->name);
+    if (d < 0.1 * reach->maxValue) {
       patterns[pattern::kLongerRays] =
           difference(renderVariant(gradingCase, tracer, tracing,
-                                   {{"ao-distance", std::to_string(2.0 * d)}}, seed + 1),
+                                   {{reach->name, reach->format(2.0 * d)}}, seed + 1),
                      referenceMean);
-      patterns[pattern::kUnlimitedRays] = difference(
-          renderVariant(gradingCase, tracer, tracing, {{"ao-distance", "1e6"}}, seed + 2),
-          referenceMean);
+      patterns[pattern::kUnlimitedRays] =
+          difference(renderVariant(gradingCase, tracer, tracing,
+                                   {{reach->name, reach->format(reach->maxValue)}}, seed + 2),
+                     referenceMean);
     }
-  } else if (gradingCase.stage == 4 || gradingCase.stage == 5) {
-    const std::string depth = gradingCase.stage == 4 ? "depth" : "max-depth";
+  } else if (depth) {
+    std::map<std::string, std::string> emitted = {{depth->name, depth->format(0)}},
+                                       direct = {{depth->name, depth->format(1)}};
     // NEE leaves the expected image as it is and makes these two far less noisy.
-    std::map<std::string, std::string> emitted = {{depth, "0"}}, direct = {{depth, "1"}};
-    if (gradingCase.stage == 5) emitted["nee"] = direct["nee"] = "on";
+    if (nee) emitted[nee->name] = direct[nee->name] = nee->format(1);
     const Image m0 = renderVariant(gradingCase, tracer, tracing, emitted, seed);
     const Image m1 = renderVariant(gradingCase, tracer, tracing, direct, seed + 1);
     patterns[pattern::kDirect] = difference(m1, m0);
-    const ParamValues params =
-        gradingCase.recipe(Variant::Reference, EarlierStages::Own, seed).params;
-    const int depthValue =
-        gradingCase.stage == 4 ? stage4().read(params).depth : stage5().read(params).maxDepth;
-    if (depthValue != 1) patterns[pattern::kIndirect] = difference(referenceMean, m1);
+    if (values.number(depth->name) != 1)
+      patterns[pattern::kIndirect] = difference(referenceMean, m1);
     // Each emitter's direct light on its own (the others dark), where there are several: a pdf
     // that does not match the picking rule is off by a factor of each emitter's own.
     std::vector<size_t> emissive;
@@ -154,6 +134,26 @@ std::map<std::string, Image> makeDifferencePatterns(const GradingCase& gradingCa
             renderVariant(gradingCase, aloneTracer, tracing, {}, seeds + 2), emittedAlone);
       }
     }
+  } else {
+    // A stage with neither (stage 1) is seen through its pixel filter.
+    // Central differences half a pixel each way: the image moved by one pixel, to first order,
+    // at the scale where filters act (a pixel-level gradient misreads fine stripes).
+    const float half = 0.5f;
+    patterns[pattern::kMovedRight] =
+        difference(renderVariant(gradingCase, tracer, tracing, {}, seed, Vec2(half, 0.0f)),
+                   renderVariant(gradingCase, tracer, tracing, {}, seed + 1, Vec2(-half, 0.0f)));
+    patterns[pattern::kMovedDown] =
+        difference(renderVariant(gradingCase, tracer, tracing, {}, seed + 2, Vec2(0.0f, half)),
+                   renderVariant(gradingCase, tracer, tracing, {}, seed + 3, Vec2(0.0f, -half)));
+    // The filter a quarter wider minus a fifth narrower: its support, to first order in ln r.
+    const float radius = gradingCase.filterRadius > 0.0f ? gradingCase.filterRadius
+                                                         : naturalFilterRadius(gradingCase.filter);
+    GradingCase wider = gradingCase, narrower = gradingCase;
+    wider.filterRadius = 1.25f * radius;
+    narrower.filterRadius = 0.8f * radius;
+    patterns[pattern::kWiderFilter] =
+        difference(renderVariant(wider, tracer, tracing, {}, seed + 4),
+                   renderVariant(narrower, tracer, tracing, {}, seed + 5));
   }
   for (auto it = patterns.begin(); it != patterns.end();)
     it = isZero(it->second) ? patterns.erase(it) : std::next(it);

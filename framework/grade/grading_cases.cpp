@@ -5,9 +5,9 @@
 #include <map>
 
 #include "core/error.h"
+#include "engine/recipe_builder.h"
 #include "grade/grading_case_builder.h"
-#include "render/recipe_builder.h"
-#include "render/reference_library.h"
+#include "stage_loading/reference_library.h"
 
 namespace pathway {
 namespace {

@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "core/variant.h"
+#include "engine/render_session.h"
 #include "film/pixel_filter.h"
 #include "render/integrator_registry.h"
-#include "render/render_session.h"
 
 namespace pathway {
 
@@ -22,7 +22,7 @@ namespace pathway {
 // kReferenceReplicates times the student's spp), their spread the variance of one student render.
 constexpr int kReferenceReplicates = 64;
 // Seeds: a submission renders with kStudentSeed, reference replicate i with kReferenceSeed + i
-// (render/render_settings.h).
+// (engine/render_settings.h).
 constexpr uint64_t kStudentSeed = 1;
 
 struct GradingCase {

@@ -14,7 +14,7 @@
 
 #include <cstdint>
 
-#include "render/render_session.h"
+#include "engine/render_session.h"
 
 namespace pathway {
 

@@ -14,9 +14,9 @@
 #include "core/child_process.h"
 #include "core/error.h"
 #include "core/temporary_folder.h"
+#include "engine/pixel_in_progress.h"
 #include "grade/case_render_job.h"
 #include "grade/reference_comparison.h"
-#include "render/pixel_in_progress.h"
 
 namespace pathway {
 namespace {

@@ -29,7 +29,8 @@ struct GradingRun {
   bool gradeReference = false;  // grade the reference stages themselves (calibration, tests)
   // How references render: their wavefront versions where they exist, or one ray at a time.
   ReferenceTracing tracing = ReferenceTracing::Fastest;
-  // Student stages built on their own (render/stage_library.h), loaded over the built-in ones.
+  // Student stages built on their own (stage_loading/stage_library.h), loaded over the built-in
+  // ones.
   std::vector<std::string> stageLibraries;
   std::string references;    // folder of the reference files
   std::string scenes;        // folder of the scenes

@@ -7,8 +7,8 @@
 #include "core/child_process.h"
 #include "core/error.h"
 #include "core/sandboxed_command.h"
-#include "render/stage_catalog.h"
-#include "render/stage_library.h"
+#include "stage_loading/stage_library.h"
+#include "stages/stage_catalog.h"
 
 namespace pathway {
 namespace {

@@ -1,5 +1,5 @@
 // A student's submission: a folder holding the stage files (a copy of assignments/, or just the
-// files, in any sub-folders), built on its own into a stage library (render/stage_library.h)
+// files, in any sub-folders), built on its own into a stage library (stage_loading/stage_library.h)
 // against this build of the framework, in a build folder of its own.
 #pragma once
 

@@ -1,12 +1,10 @@
 #include "render/integrator_registry.h"
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 
 #include "core/error.h"
-#include "render/reference_library.h"
-#include "render/stage_catalog.h"
-#include "render/student_stages.h"
 
 namespace pathway {
 namespace {
@@ -43,11 +41,35 @@ namespace {
 
 constexpr const char* kWavefrontSuffix = "@fast";
 
-IntegratorInfo stageInfo(int stage, Variant variant, std::string name, IntegratorFactory factory) {
-  const StageDeclaration& declaration = stageDeclaration(stage);
+std::map<std::pair<int, Variant>, std::string>& missingReasons() {
+  static std::map<std::pair<int, Variant>, std::string> reasons;
+  return reasons;
+}
+
+// "stage3" (the student's), "stage3@ref" or "stage3@fast" (the reference): the stage and variant;
+// 0 for any other name.
+int stageNamed(const std::string& name, Variant& variant) {
+  const std::string prefix = "stage";
+  size_t end = prefix.size();
+  while (end < name.size() && std::isdigit(static_cast<unsigned char>(name[end]))) ++end;
+  if (name.compare(0, prefix.size(), prefix) != 0 || end == prefix.size() ||
+      end > 4 + prefix.size())
+    return 0;
+  const std::string suffix = name.substr(end);
+  if (suffix.empty())
+    variant = Variant::Student;
+  else if (suffix == "@ref" || suffix == kWavefrontSuffix)
+    variant = Variant::Reference;
+  else
+    return 0;
+  return std::stoi(name.substr(prefix.size(), end - prefix.size()));
+}
+
+IntegratorInfo stageInfo(const StageDeclaration& declaration, Variant variant, std::string name,
+                         IntegratorFactory factory) {
   IntegratorInfo info;
   info.name = std::move(name);
-  info.stage = stage;
+  info.stage = declaration.number;
   info.variant = variant;
   info.summary = declaration.summary;
   info.params = declaration.params;
@@ -62,18 +84,33 @@ IntegratorInfo stageInfo(int stage, Variant variant, std::string name, Integrato
 
 }  // namespace
 
-bool registerStageIntegrator(int stage, Variant variant, IntegratorFactory factory) {
+bool registerStageIntegrator(const StageDeclaration& stage, Variant variant,
+                             IntegratorFactory factory) {
   return registerIntegrator(
-      stageInfo(stage, variant, stageIntegratorName(stage, variant), std::move(factory)));
+      stageInfo(stage, variant, stageIntegratorName(stage.number, variant), std::move(factory)));
 }
 
-bool registerWavefrontStageIntegrator(int stage, IntegratorFactory factory) {
+bool registerWavefrontStageIntegrator(const StageDeclaration& stage, IntegratorFactory factory) {
   IntegratorInfo info =
-      stageInfo(stage, Variant::Reference, "stage" + std::to_string(stage) + kWavefrontSuffix,
-                std::move(factory));
+      stageInfo(stage, Variant::Reference, stage.name + kWavefrontSuffix, std::move(factory));
   info.wavefront = true;
   info.summary += " (wavefront: 16-ray packets, the reference's estimator)";
   return registerIntegrator(std::move(info));
+}
+
+void noteMissingStage(int stage, Variant variant, std::string why) {
+  missingReasons()[{stage, variant}] = std::move(why);
+}
+
+std::string missingStageReason(int stage, Variant variant) {
+  const auto found = missingReasons().find({stage, variant});
+  return found == missingReasons().end() ? "" : found->second;
+}
+
+std::string referenceStageMissing(int stage) {
+  const std::string why = missingStageReason(stage, Variant::Reference);
+  return "the reference stage " + std::to_string(stage) + " is not available (" +
+         (why.empty() ? "not built in" : why) + ")";
 }
 
 std::string referenceIntegratorName(int stage, ReferenceTracing tracing) {
@@ -97,21 +134,16 @@ const IntegratorInfo& findIntegrator(std::string_view requested) {
   std::string known;
   for (const IntegratorInfo* info : allIntegrators())
     known += (known.empty() ? "" : ", ") + info->name;
-  const std::string& why = referenceStagesProblem();
-  auto endsWith = [&name](const std::string& suffix) {
-    return name.size() > suffix.size() &&
-           name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
-  };
-  const bool reference = endsWith("@ref") || endsWith(kWavefrontSuffix);
-  // A student stage that is not here: say why (it did not compile, it changed since).
-  std::string studentWhy;
-  for (int stage = 1; stage <= kStageCount && studentWhy.empty(); ++stage)
-    if (name == stageIntegratorName(stage, Variant::Student))
-      studentWhy = studentStageProblem(stage);
-  if (!studentWhy.empty()) throw PathwayError("your " + name + " is not here: " + studentWhy);
+  // A stage that is not here: say why (it did not compile, it changed since, the reference
+  // library was refused).
+  Variant variant = Variant::Student;
+  const int stage = stageNamed(name, variant);
+  const std::string why = stage ? missingStageReason(stage, variant) : "";
+  if (!why.empty() && variant == Variant::Student)
+    throw PathwayError("your " + name + " is not here: " + why);
   throw PathwayError("unknown integrator '" + name + "' (known: " + known +
                      "; 'pathway render --list' describes them)" +
-                     (reference && !why.empty() ? "; no reference stages: " + why : ""));
+                     (why.empty() ? "" : "; no reference stages: " + why));
 }
 
 const IntegratorInfo* findStageIntegrator(int stage, Variant variant) {

@@ -14,6 +14,7 @@
 #include "core/variant.h"
 #include "render/integrator.h"
 #include "render/parameters.h"
+#include "render/stage_definition.h"
 #include "render/stage_kit.h"
 
 namespace pathway {
@@ -48,15 +49,24 @@ struct IntegratorInfo {
 
 // Registers at static-initialisation time; returns true so it can initialise a static bool.
 bool registerIntegrator(IntegratorInfo info);
-// Registers stage `stage` of `variant` under the stage's declared name, summary and parameters
-// (render/stage_catalog.h), running the stage's own checks before `factory`.
-bool registerStageIntegrator(int stage, Variant variant, IntegratorFactory factory);
-// Registers the wavefront version of reference stage `stage` as "stageN@fast", with the stage's
+// Registers a stage of `variant` under its declared name, summary and parameters
+// (render/stage_definition.h), running the stage's own checks before `factory`.
+bool registerStageIntegrator(const StageDeclaration& stage, Variant variant,
+                             IntegratorFactory factory);
+// Registers the wavefront version of a reference stage as "stageN@fast", with the stage's
 // declared summary and parameters.
-bool registerWavefrontStageIntegrator(int stage, IntegratorFactory factory);
+bool registerWavefrontStageIntegrator(const StageDeclaration& stage, IntegratorFactory factory);
+
+// Why stage `stage` of `variant` is missing, as the code that loads stage libraries found it
+// (stage_loading/): the registry knows what registered, not where stages come from.
+void noteMissingStage(int stage, Variant variant, std::string why);
+// What was noted for stage `stage` of `variant`, or "".
+std::string missingStageReason(int stage, Variant variant);
+// "the reference stage 3 is not available (WHY)": for messages where one is needed but missing.
+std::string referenceStageMissing(int stage);
 
 // Every registration so far, in order. A name appears twice when a stage library
-// (render/stage_library.h) replaced a built-in stage.
+// (stage_loading/stage_library.h) replaced a built-in stage.
 const std::vector<std::string>& registrationLog();
 
 // Throws PathwayError listing the known names when `name` is unknown. (A view, not a string

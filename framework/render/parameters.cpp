@@ -60,10 +60,16 @@ OptionSpec OptionSpec::keepingTheExpectedImage() const {
   return spec;
 }
 
-OptionSpec OptionSpec::asRecursionDepth() const {
+OptionSpec OptionSpec::withRole(OptionRole role) const {
   OptionSpec spec = *this;
-  spec.isRecursionDepth = true;
+  spec.role = role;
   return spec;
+}
+
+const OptionSpec* optionWithRole(const std::vector<OptionSpec>& options, OptionRole role) {
+  for (const OptionSpec& option : options)
+    if (option.role == role) return &option;
+  return nullptr;
 }
 
 OptionSpec OptionSpec::toggle(std::string name, bool defaultValue, std::string help) {

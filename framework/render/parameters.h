@@ -1,4 +1,4 @@
-// Options: every value a user can set — a render setting (render/render_settings.h), a chart's
+// Options: every value a user can set — a render setting (engine/render_settings.h), a chart's
 // (chart/chart_spec.h) or a stage's parameter (framework/stages/) — is declared once as an
 // OptionSpec of one kind (integer, real, toggle, choice) with its default, range and help. The CLI
 // options, the viewer's widgets, the metadata and the docs are made from the declarations;
@@ -23,6 +23,11 @@ enum class OptionKind {
 // "integer", "real", "toggle", "choice": as the stages' parameter tables write the kinds.
 const char* optionKindName(OptionKind kind);
 
+// What a stage's parameter is to the framework beyond its value: the viewer's Up / Down keys step
+// the recursion depth; the grader's difference patterns (grade/difference_patterns.cpp) vary the
+// AO reach and the depth, and turn next-event estimation on.
+enum class OptionRole { None, RecursionDepth, AoReach, NextEventEstimation };
+
 struct OptionSpec {
   std::string name;  // lower-case, dash-separated: "spp" (--spp), "ao-distance" (-p ao-distance=)
   OptionKind kind = OptionKind::Real;
@@ -35,8 +40,7 @@ struct OptionSpec {
   // or only its noise and cost (a sample count, NEE, how lights are picked). References are
   // shared only across values of parameters that do not (charts, the viewer's error plot).
   bool changesExpectedImage = true;
-  // The recursion depth of a stage that recurses (the viewer's Up / Down keys step it).
-  bool isRecursionDepth = false;
+  OptionRole role = OptionRole::None;
 
   // (The bounds are doubles so that a range can reach 2^64, the seed's.)
   static OptionSpec integer(std::string name, long long defaultValue, double minValue,
@@ -49,8 +53,8 @@ struct OptionSpec {
 
   // This declaration, marked as one that changes only noise and cost.
   OptionSpec keepingTheExpectedImage() const;
-  // This declaration, marked as the stage's recursion depth.
-  OptionSpec asRecursionDepth() const;
+  // This declaration, marked as playing `role` in its stage.
+  OptionSpec withRole(OptionRole role) const;
   // This declaration with another default and help, for a command that uses the same setting
   // differently (the viewer refines towards a far larger spp than a render takes).
   OptionSpec withDefault(double value, std::string help) const;
@@ -73,6 +77,9 @@ struct OptionSpec {
   // "[1, 1024]", "on or off", "area or power".
   std::string describeRange() const;
 };
+
+// The option of `options` that plays `role`, or nullptr.
+const OptionSpec* optionWithRole(const std::vector<OptionSpec>& options, OptionRole role);
 
 // The values of one integrator's parameters, every declared one present.
 class ParamValues {

@@ -1,5 +1,7 @@
 // How a stage declares itself (framework/stages/stageN.h): its number, file, summary and usual
 // sampler, and a parameter table whose rows each fill one field of the stage's own typed struct.
+// StageDeclaration is the same without the typed struct, for the registry, the CLI, the viewer
+// and the grader (stages/stage_catalog.h lists the five).
 // A stage reads `setup.params.aoDistance`, so a misspelt parameter fails to compile; the CLI, the
 // viewer's panel and the metadata see the same rows as options (render/parameters.h).
 #pragma once
@@ -11,12 +13,22 @@
 #include <vector>
 
 #include "render/parameters.h"
-#include "render/stage_catalog.h"
 #include "render/stage_kit.h"
 #include "sampling/sampler.h"
 #include "scene/scene.h"
 
 namespace pathway {
+
+struct StageDeclaration {
+  int number = 0;
+  std::string name;  // "stage3"; the reference registers as "stage3@ref"
+  std::string file;  // the stage's file, the same name in assignments/stageN and solutions/stageN
+  std::string summary;
+  std::vector<OptionSpec> params;
+  SamplerType defaultSampler = SamplerType::Independent;
+  // Refuses parameter values that must not start rendering (throws PathwayError); may be null.
+  std::function<void(const std::string& integratorName, const ParamValues& params)> check;
+};
 
 // What a stage's integrator is built from: its parameters, typed, the earlier stages' functions
 // and the scene. It lives while the constructor runs: copy what the integrator keeps.

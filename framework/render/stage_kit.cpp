@@ -3,7 +3,7 @@
 #include <optional>
 
 #include "core/error.h"
-#include "render/reference_library.h"
+#include "render/integrator_registry.h"
 
 namespace pathway {
 namespace {

@@ -21,8 +21,8 @@ struct Stage2Params {
 
 // Shared with stage 3, so that nested and 4D AO are compared at equal D.
 inline OptionSpec aoDistanceOption() {
-  return OptionSpec::real("ao-distance", 0.25, 1e-6, 1e6,
-                          "D: how far an AO ray looks for blockers");
+  return OptionSpec::real("ao-distance", 0.25, 1e-6, 1e6, "D: how far an AO ray looks for blockers")
+      .withRole(OptionRole::AoReach);
 }
 
 inline const StageDefinition<Stage2Params>& stage2() {

@@ -41,7 +41,7 @@ inline const StageDefinition<Stage4Params>& stage4() {
        stageParam(&Stage4Params::depth,
                   OptionSpec::integer("depth", 2, 0, 64,
                                       "D: bounces; 0 shows emitters only, 1 adds direct light")
-                      .asRecursionDepth()),
+                      .withRole(OptionRole::RecursionDepth)),
        stageParam(&Stage4Params::maxRays,
                   OptionSpec::integer("max-rays", 1000000, 1, 1000000000000,
                                       "refuse settings that cast more rays per camera sample")

@@ -36,7 +36,7 @@ inline const StageDefinition<Stage5Params>& stage5() {
                   OptionSpec::integer("max-depth", 5, -1, 1000,
                                       "most bounces a path takes (0: emitters only, 1: direct "
                                       "light; -1: no limit)")
-                      .asRecursionDepth()),
+                      .withRole(OptionRole::RecursionDepth)),
        stageParam(
            &Stage5Params::rouletteDepth,
            OptionSpec::integer("rr-depth", 3, 0, 1000, "bounces before Russian roulette starts")
@@ -45,7 +45,8 @@ inline const StageDefinition<Stage5Params>& stage5() {
                   OptionSpec::toggle("nee", true,
                                      "next-event estimation: shadow rays to the emitters (off: "
                                      "only bounces find light)")
-                      .keepingTheExpectedImage()),
+                      .keepingTheExpectedImage()
+                      .withRole(OptionRole::NextEventEstimation)),
        // The options in the order of EmitterWeighting's values.
        stageParam(&Stage5Params::lightPick,
                   OptionSpec::choice("light-pick", "power", {"area", "power"},

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/number_format.h"
 #include "render/integrator_registry.h"
 
 namespace pathway {
@@ -100,11 +101,11 @@ void legend(ImDrawList* draw, const Pane& pane, const PaneInfo& info) {
     draw->AddRectFilledMultiColor(ImVec2(x0, min.y), ImVec2(x1, min.y + barHeight), ca, cb, cb, ca);
   }
   draw->AddText(ImVec2(min.x, min.y - 18), kTextColor, title);
-  char top[32];
-  std::snprintf(top, sizeof top, "%.4g", info.scaleMax);
+  const std::string top = formatNumber("%.4g", info.scaleMax);
   draw->AddText(ImVec2(min.x, min.y + barHeight + 2), kTextColor, rays ? "1" : "0");
-  draw->AddText(ImVec2(min.x + barWidth - ImGui::CalcTextSize(top).x, min.y + barHeight + 2),
-                kTextColor, top);
+  draw->AddText(
+      ImVec2(min.x + barWidth - ImGui::CalcTextSize(top.c_str()).x, min.y + barHeight + 2),
+      kTextColor, top.c_str());
 }
 
 void drawPaneContent(ImDrawList* draw, const Pane& pane, const GlTexture& texture,

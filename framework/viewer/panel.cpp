@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "render/integrator_registry.h"
-#include "render/reference_library.h"
+#include "stage_loading/reference_library.h"
 #include "viewer/option_widget.h"
 #include "viewer/viewer_options.h"
 

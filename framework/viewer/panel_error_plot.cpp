@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/number_format.h"
 #include "viewer/option_widget.h"
 #include "viewer/panel.h"
 
@@ -30,12 +31,6 @@ constexpr float kMarginBottom = 17.0f;
 constexpr float kMarginTop = 4.0f;
 constexpr float kMarginRight = 18.0f;  // room for the last seconds label to centre on its tick
 constexpr int kMaxLabels = 6;          // per axis; more decades label every other one
-
-std::string scientific(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", value);
-  return text;
-}
 
 // Every `step`-th decade gets a label, so labels never overlap.
 int labelStep(const LogAxis& axis) {
@@ -136,8 +131,8 @@ void latestValues(const ErrorHistory* const* histories, int lanes) {
     ImGui::SameLine();
     if (!history.points().empty()) {
       const ErrorPoint& last = history.points().back();
-      ImGui::Text("relMSE %s  at %u spp, %.2f s", scientific(last.relMse).c_str(), last.spp,
-                  last.seconds);
+      ImGui::Text("relMSE %s  at %u spp, %.2f s", formatNumber("%.3g", last.relMse).c_str(),
+                  last.spp, last.seconds);
     } else {
       ImGui::TextDisabled(history.message().empty() ? "waiting for an image" : "not measured");
     }

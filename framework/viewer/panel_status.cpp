@@ -2,11 +2,11 @@
 // finished (errors, TODOs hit in the stage code).
 #include <imgui.h>
 
-#include <cstdio>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "core/number_format.h"
 #include "viewer/panel.h"
 
 namespace pathway {
@@ -16,14 +16,8 @@ const ImVec4 kTodoColor(1.0f, 0.62f, 0.15f, 1.0f);
 const ImVec4 kErrorColor(1.0f, 0.35f, 0.35f, 1.0f);
 const ImVec4 kGoodColor(0.45f, 0.9f, 0.45f, 1.0f);
 
-std::string format(const char* pattern, double value) {
-  char text[64];
-  std::snprintf(text, sizeof text, pattern, value);
-  return text;
-}
-
 std::string millions(uint64_t n) {
-  return format("%.2f M", static_cast<double>(n) * 1e-6);
+  return formatNumber("%.2f M", static_cast<double>(n) * 1e-6);
 }
 
 using CounterRows = std::vector<std::pair<const char*, std::string>>;
@@ -34,15 +28,15 @@ CounterRows counterRows(const LaneFrame& frame) {
   CounterRows rows = {
       {"spp",
        std::to_string(s.samplesPerPixel) + " / " + std::to_string(frame.settings.samplesPerPixel)},
-      {"render time", format("%.2f s", s.seconds)},
-      {"rays / s", format("%.1f M", s.seconds > 0 ? c.totalRays() / s.seconds * 1e-6 : 0.0)},
+      {"render time", formatNumber("%.2f s", s.seconds)},
+      {"rays / s", formatNumber("%.1f M", s.seconds > 0 ? c.totalRays() / s.seconds * 1e-6 : 0.0)},
       {"primary rays", millions(c.primary)},
       {"secondary rays", millions(c.secondary)},
       {"shadow rays", millions(c.shadow)},
       {"total rays", millions(c.totalRays())},
       {"invalid samples", std::to_string(c.invalidSamples)},
       {"pixels with sum w = 0", std::to_string(frame.unresolvedPixels)},
-      {"first image after", format("%.0f ms", frame.firstImageSeconds * 1e3)},
+      {"first image after", formatNumber("%.0f ms", frame.firstImageSeconds * 1e3)},
       {"image",
        std::to_string(frame.settings.width) + " x " + std::to_string(frame.settings.height)},
   };

@@ -2,13 +2,13 @@
 
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <map>
 #include <sstream>
 
 #include "core/error.h"
+#include "core/number_format.h"
 #include "io/image_io.h"
 #include "render/integrator_registry.h"
 
@@ -20,9 +20,7 @@ std::string sizeText(int width, int height) {
 }
 
 std::string radiusText(float radius) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2g", radius);
-  return text;
+  return formatNumber("%.2g", radius);
 }
 
 }  // namespace

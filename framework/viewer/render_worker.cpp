@@ -5,8 +5,8 @@
 #include <exception>
 
 #include "core/error.h"
+#include "engine/recipe_builder.h"
 #include "render/integrator_registry.h"
-#include "render/recipe_builder.h"
 #include "scene/camera.h"
 #include "viewer/render_priority.h"
 

@@ -23,8 +23,8 @@
 #include <vector>
 
 #include "core/todo.h"
+#include "engine/render_session.h"
 #include "io/image_io.h"
-#include "render/render_session.h"
 #include "viewer/loaded_scene.h"
 #include "viewer/orbit_camera.h"
 

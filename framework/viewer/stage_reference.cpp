@@ -1,8 +1,8 @@
 #include "viewer/stage_reference.h"
 
 #include "core/error.h"
-#include "render/recipe_builder.h"
-#include "render/reference_library.h"
+#include "engine/recipe_builder.h"
+#include "stage_loading/reference_library.h"
 
 namespace pathway {
 

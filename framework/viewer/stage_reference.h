@@ -8,8 +8,8 @@
 #include <optional>
 #include <string>
 
+#include "engine/render_session.h"
 #include "render/integrator_registry.h"
-#include "render/render_session.h"
 #include "viewer/loaded_scene.h"
 #include "viewer/render_worker.h"
 

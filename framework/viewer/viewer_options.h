@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "render/render_choices.h"
+#include "engine/render_choices.h"
 
 namespace pathway {
 

@@ -9,8 +9,8 @@
 #include <optional>
 
 #include "core/error.h"
+#include "engine/render_choices.h"
 #include "render/integrator_registry.h"
-#include "render/render_choices.h"
 #include "viewer/viewer_app.h"
 
 namespace pathway {

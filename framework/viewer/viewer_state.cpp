@@ -67,7 +67,7 @@ void stepRecursionDepth(ViewerState& state, int steps) {
     const IntegratorInfo* info = find(state.integrator[lane]);
     if (!info) continue;
     for (const OptionSpec& spec : info->params) {
-      if (!spec.isRecursionDepth) continue;
+      if (spec.role != OptionRole::RecursionDepth) continue;
       // -1 (no limit) is not a step on the way from 0 up.
       const double value = std::clamp(paramValue(state, lane, *info, spec) + steps,
                                       std::max(0.0, spec.minValue), spec.maxValue);

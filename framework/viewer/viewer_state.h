@@ -10,9 +10,9 @@
 #include <string>
 #include <utility>
 
+#include "engine/render_settings.h"
 #include "film/pixel_filter.h"
 #include "render/integrator_registry.h"
-#include "render/render_settings.h"
 #include "sampling/sampler.h"
 #include "scene/gltf_loader.h"
 #include "viewer/display_image.h"
@@ -71,7 +71,7 @@ double paramValue(const ViewerState& state, int lane, const IntegratorInfo& info
 void setParamValue(ViewerState& state, int lane, const IntegratorInfo& info, const OptionSpec& spec,
                    double value);
 
-// Steps the recursion depth (OptionSpec::isRecursionDepth) of every pane shown by `steps`, kept
+// Steps the recursion depth (OptionRole::RecursionDepth) of every pane shown by `steps`, kept
 // within [max(0, lowest), highest]; panes whose integrator does not recurse are left alone.
 void stepRecursionDepth(ViewerState& state, int steps);
 // Multiplies the lights' size (setting::kLightScale) by `factor`, kept within its range. Returns

@@ -130,17 +130,17 @@ class AmbientOcclusionWave {
 class WavefrontNestedAmbientOcclusion : public WavefrontIntegrator {
  public:
   explicit WavefrontNestedAmbientOcclusion(const StageSetup<Stage2Params>& setup)
-      : raysPerHit_(setup.params.aoRays),
-        reach_(setup.params.aoDistance),
-        hemisphere_(setup.kit.stage2()) {}
+      : aoRays_(setup.params.aoRays),
+        aoDistance_(setup.params.aoDistance),
+        stage2_(setup.kit.stage2()) {}
 
   // M estimates per sample: fewer samples per batch as M grows, so its AO rays stay in cache.
   size_t batchSize() const override {
-    return std::max<size_t>(RayTracer::kPacketSize, kBatchSize / static_cast<size_t>(raysPerHit_));
+    return std::max<size_t>(RayTracer::kPacketSize, kBatchSize / static_cast<size_t>(aoRays_));
   }
 
   void LiBatch(CameraSampleBatch& batch, const RenderContext& context) const override {
-    const size_t n = batch.size(), m = static_cast<size_t>(raysPerHit_);
+    const size_t n = batch.size(), m = static_cast<size_t>(aoRays_);
     thread_local Scratch s;
     s.hits.resize(n);
     s.eye.resize(n);
@@ -152,7 +152,7 @@ class WavefrontNestedAmbientOcclusion : public WavefrontIntegrator {
     for (uint32_t i = 0; i < n; ++i) {
       if (!s.hits[i]) continue;
       for (size_t j = 0; j < m; ++j)
-        s.ao.prepare(i * m + j, hemisphere_, *s.hits[i], batch.samples[i].next2D(), reach_);
+        s.ao.prepare(i * m + j, stage2_, *s.hits[i], batch.samples[i].next2D(), aoDistance_);
     }
     s.ao.trace(context);
     for (const uint32_t k : s.ao.traced()) ++batch.rays[k / m];
@@ -163,7 +163,7 @@ class WavefrontNestedAmbientOcclusion : public WavefrontIntegrator {
       }
       float sum = 0.0f;  // in stage2@ref's order
       for (size_t j = 0; j < m; ++j) sum += s.ao.estimate(i * m + j);
-      batch.radiance[i] = Color(sum / raysPerHit_);
+      batch.radiance[i] = Color(sum / aoRays_);
     }
   }
 
@@ -174,9 +174,9 @@ class WavefrontNestedAmbientOcclusion : public WavefrontIntegrator {
     AmbientOcclusionWave ao;
   };
 
-  int raysPerHit_;                     // M
-  float reach_;                        // D
-  const Stage2Functions& hemisphere_;  // this stage's own functions: the reference's stage 2
+  int aoRays_;                     // M
+  float aoDistance_;               // D
+  const Stage2Functions& stage2_;  // this stage's own functions: the reference's stage 2
 };
 
 const bool registeredWavefront = registerWavefrontStage<WavefrontNestedAmbientOcclusion>(stage2());

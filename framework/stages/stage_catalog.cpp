@@ -1,4 +1,4 @@
-#include "render/stage_catalog.h"
+#include "stages/stage_catalog.h"
 
 #include "core/error.h"
 #include "stages/stage1.h"

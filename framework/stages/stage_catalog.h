@@ -6,27 +6,11 @@
 // --list`, the viewer panel, the grader and the docs.
 #pragma once
 
-#include <functional>
-#include <string>
-#include <vector>
-
-#include "render/parameters.h"
-#include "sampling/sampler.h"
+#include "render/stage_definition.h"
 
 namespace pathway {
 
 constexpr int kStageCount = 5;
-
-struct StageDeclaration {
-  int number = 0;
-  std::string name;  // "stage3"; the reference registers as "stage3@ref"
-  std::string file;  // the stage's file, the same name in assignments/stageN and solutions/stageN
-  std::string summary;
-  std::vector<OptionSpec> params;
-  SamplerType defaultSampler = SamplerType::Independent;
-  // Refuses parameter values that must not start rendering (throws PathwayError); may be null.
-  std::function<void(const std::string& integratorName, const ParamValues& params)> check;
-};
 
 // Stage `stage` in 1..kStageCount; throws PathwayError otherwise.
 const StageDeclaration& stageDeclaration(int stage);

@@ -1,4 +1,4 @@
-#include "render/pixel_in_progress.h"
+#include "engine/pixel_in_progress.h"
 
 #include <unistd.h>
 

@@ -1,8 +1,8 @@
 // Stages built on their own, into a shared library that the running program loads: the grader
 // builds each submission (and each planted bug of the mutant suite) this way, instead of building
 // the whole program again, and a handout ships the reference stages this way
-// (render/reference_library.h). Loading a library registers its stages over the built-in ones of
-// the same name ("stageN", or "stageN@ref").
+// (stage_loading/reference_library.h). Loading a library registers its stages over the built-in
+// ones of the same name ("stageN", or "stageN@ref").
 #pragma once
 
 #include <string>

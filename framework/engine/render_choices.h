@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "render/recipe_builder.h"
+#include "engine/recipe_builder.h"
 #include "scene/gltf_loader.h"
 
 namespace pathway {

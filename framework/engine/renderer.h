@@ -17,10 +17,10 @@
 
 #include "core/ray_counters.h"
 #include "core/todo.h"
+#include "engine/render_settings.h"
 #include "film/film.h"
 #include "film/pixel_filter.h"
 #include "render/integrator.h"
-#include "render/render_settings.h"
 #include "render/stage_kit.h"
 #include "sampling/sampler.h"
 #include "scene/camera.h"

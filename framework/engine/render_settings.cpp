@@ -1,4 +1,4 @@
-#include "render/render_settings.h"
+#include "engine/render_settings.h"
 
 #include "core/error.h"
 

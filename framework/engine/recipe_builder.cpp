@@ -1,4 +1,4 @@
-#include "render/recipe_builder.h"
+#include "engine/recipe_builder.h"
 
 namespace pathway {
 

@@ -5,17 +5,12 @@
 // as the autograder does, and only its sandboxed child loads them).
 #pragma once
 
-#include <string>
-
 namespace pathway {
 
 // Loads every student stage library this build made, once; a stage whose library is missing or
-// cannot be loaded is remembered, not fatal (the other stages still render).
+// cannot be loaded is not fatal (the other stages still render): why is noted in the registry
+// (render/integrator_registry.h), e.g. "assignments/stage3/stage3_ao_4d.cpp did not compile
+// (scripts/build shows the compiler's message)", and shown when the stage is asked for.
 void loadStudentStages();
-
-// Why student stage `stage` is not here ("" when it is, or when nothing was loaded): e.g.
-// "assignments/stage3/stage3_ao_4d.cpp did not compile (scripts/build shows the compiler's
-// message)".
-std::string studentStageProblem(int stage);
 
 }  // namespace pathway

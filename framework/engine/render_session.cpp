@@ -1,4 +1,4 @@
-#include "render/render_session.h"
+#include "engine/render_session.h"
 
 #include <cstdio>
 

@@ -1,4 +1,4 @@
-#include "render/renderer.h"
+#include "engine/renderer.h"
 
 #include <tbb/info.h>
 #include <tbb/parallel_for.h>
@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "render/pixel_in_progress.h"
+#include "engine/pixel_in_progress.h"
 #include "render/wavefront.h"
 
 namespace pathway {

@@ -1,24 +1,15 @@
-#include "render/student_stages.h"
+#include "stage_loading/student_stages.h"
 
 #include <filesystem>
-#include <map>
 
 #include "core/error.h"
 #include "render/integrator_registry.h"
-#include "render/stage_catalog.h"
-#include "render/stage_library.h"
+#include "stage_loading/stage_library.h"
+#include "stages/stage_catalog.h"
 
 namespace pathway {
-namespace {
 
 namespace fs = std::filesystem;
-
-std::map<int, std::string>& problems() {
-  static std::map<int, std::string> byStage;
-  return byStage;
-}
-
-}  // namespace
 
 void loadStudentStages() {
   static bool loaded = false;
@@ -33,31 +24,28 @@ void loadStudentStages() {
     const std::string file = "assignments/" + declared.name + "/" + declared.file;
     std::error_code missing;
     if (!fs::exists(library, missing)) {
-      problems()[stage] = file + " has not been built" +
-                          (fs::exists(source, missing)
-                               ? " or did not compile (scripts/build shows the compiler's message)"
-                               : std::string(" (the file is missing)"));
+      noteMissingStage(stage, Variant::Student,
+                       file + " has not been built" +
+                           (fs::exists(source, missing)
+                                ? " or did not compile (scripts/build shows the compiler's message)"
+                                : std::string(" (the file is missing)")));
       continue;
     }
     // A library older than its file is from before the last edit: the build since then failed,
     // or has not run. Rendering it would show code the student no longer has.
     if (fs::exists(source, missing) &&
         fs::last_write_time(source, missing) > fs::last_write_time(library, missing)) {
-      problems()[stage] = file + " changed since it was last built (scripts/build builds it, " +
-                          "or shows the compiler's message)";
+      noteMissingStage(stage, Variant::Student,
+                       file + " changed since it was last built (scripts/build builds it, " +
+                           "or shows the compiler's message)");
       continue;
     }
     try {
       loadStageLibrary(library.string());
     } catch (const PathwayError& error) {
-      problems()[stage] = file + ": " + error.what();
+      noteMissingStage(stage, Variant::Student, file + ": " + error.what());
     }
   }
-}
-
-std::string studentStageProblem(int stage) {
-  const auto found = problems().find(stage);
-  return found == problems().end() ? "" : found->second;
 }
 
 }  // namespace pathway

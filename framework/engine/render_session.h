@@ -9,17 +9,17 @@
 #include <vector>
 
 #include "core/todo.h"
+#include "engine/render_settings.h"
+#include "engine/renderer.h"
 #include "io/image_io.h"
 #include "render/integrator_registry.h"
-#include "render/render_settings.h"
-#include "render/renderer.h"
 #include "scene/camera.h"
 #include "scene/ray_tracer.h"
 
 namespace pathway {
 
 // Everything that decides an image besides the scene and the camera. Made by RecipeBuilder
-// (render/recipe_builder.h), which fills in the integrator's defaults and checks names.
+// (engine/recipe_builder.h), which fills in the integrator's defaults and checks names.
 struct RenderRecipe {
   std::string integrator = setting::kIntegrator;
   // The integrator's parameter values; left empty, every parameter takes its declared default.

@@ -1,4 +1,4 @@
-#include "render/render_choices.h"
+#include "engine/render_choices.h"
 
 namespace pathway {
 

@@ -1,4 +1,4 @@
-#include "render/stage_library.h"
+#include "stage_loading/stage_library.h"
 
 #include <cxxabi.h>
 #include <dlfcn.h>

@@ -34,14 +34,12 @@ struct ReferenceStages {
 //     over any built-in reference stages (to check a library against the built-in reference);
 //   - otherwise a program with solutions/ built in uses them, and one without loads the library
 //     shipped with a handout (reference/libpathway_reference.so), when it is there.
-// Never throws: a library it cannot use is reported in the result. Not thread-safe: call it once
+// Never throws: a library it cannot use is reported in the result, and noted in the registry for
+// each stage (referenceStageMissing in render/integrator_registry.h). Not thread-safe: call it once
 // at start-up, before other threads run.
 const ReferenceStages& loadReferenceStages();
 // What loadReferenceStages() found wrong with a library, or "" (also before it was called).
 const std::string& referenceStagesProblem();
-
-// "the reference stage 3 is not available (WHY)": for messages where one is needed but missing.
-std::string referenceStageMissing(int stage);
 
 // Why `path` cannot be loaded into this program, or "" when it carries a valid seal for this
 // platform and stage interface. Reads the file; does not load it.
