@@ -6,14 +6,12 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <cctype>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
-#include <sstream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -54,33 +52,13 @@ std::vector<Vec3> quadCorners() {
   return corners;
 }
 
-// The "positions" of a hierarchy_*.expected.json: the numbers of its innermost arrays, by triples.
+// The "positions" of a hierarchy_*.expected.json: one [x, y, z] per vertex.
 std::vector<Vec3> readExpectedPositions(const std::string& path) {
   std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  const std::string json = text.str();
-  std::vector<float> numbers;
-  const size_t key = json.find("\"positions\"");
-  if (key == std::string::npos) return {};
-  size_t at = json.find('[', key);
-  int depth = 0;
-  do {
-    if (json[at] == '[') {
-      ++depth;
-    } else if (json[at] == ']') {
-      --depth;
-    } else if (std::isdigit(static_cast<unsigned char>(json[at])) || json[at] == '-') {
-      char* end = nullptr;
-      numbers.push_back(std::strtof(json.c_str() + at, &end));
-      at = static_cast<size_t>(end - json.c_str()) - 1;
-    }
-    ++at;
-  } while (depth > 0 && at < json.size());
+  const nlohmann::json expected = nlohmann::json::parse(file);
   std::vector<Vec3> positions;
-  for (size_t i = 0; i + 2 < numbers.size(); i += 3) {
-    positions.emplace_back(numbers[i], numbers[i + 1], numbers[i + 2]);
-  }
+  for (const nlohmann::json& p : expected.at("positions"))
+    positions.emplace_back(p.at(0).get<float>(), p.at(1).get<float>(), p.at(2).get<float>());
   return positions;
 }
 

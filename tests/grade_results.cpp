@@ -1,24 +1,23 @@
 #include "grade_results.h"
 
+#include <nlohmann/json.hpp>
+
 namespace pathway::test {
 
 std::vector<CaseLine> caseLines(const std::string& json) {
+  // Throws nlohmann::json::parse_error on a file that is not JSON: the test then fails, naming it.
+  const nlohmann::json results = nlohmann::json::parse(json);
   std::vector<CaseLine> lines;
-  for (size_t at = json.find("{\"name\""); at != std::string::npos;
-       at = json.find("{\"name\"", at + 1)) {
-    const size_t end = json.find('\n', at);
-    const std::string line = json.substr(at, end - at);
-    auto field = [&](const std::string& key) {
-      const size_t start = line.find("\"" + key + "\": \"");
-      if (start == std::string::npos) return std::string();
-      const size_t from = start + key.size() + 5;
-      return line.substr(from, line.find('"', from) - from);
-    };
-    const size_t output = line.find("\"output\": \"");
-    lines.push_back({field("name"), field("status"), field("image"), field("likely_cause"),
-                     output == std::string::npos ? "" : line.substr(output)});
+  for (const nlohmann::json& test : results.at("tests")) {
+    const nlohmann::json& extra = test.at("extra_data");
+    lines.push_back({test.at("name"), test.at("status"), extra.at("image"),
+                     extra.at("likely_cause"), test.at("output"), test.at("score")});
   }
   return lines;
+}
+
+double score(const std::string& json) {
+  return nlohmann::json::parse(json).at("score").get<double>();
 }
 
 std::map<std::string, std::string> caseStatuses(const std::string& json) {

@@ -1,5 +1,5 @@
-// Reads back the cases of a results.json that `pathway grade` wrote (Gradescope's format), by
-// plain text search: enough for a file this program wrote itself in a fixed layout.
+// Reads back a results.json that `pathway grade` wrote (Gradescope's format) with a JSON parser,
+// so a file that is not valid JSON fails the test that reads it.
 #pragma once
 
 #include <map>
@@ -13,10 +13,13 @@ struct CaseLine {
   std::string status;  // "passed" or "failed"
   std::string image;   // extra_data.image: "pass", "fail" or "none"
   std::string cause;   // extra_data.likely_cause: "" or "scale", "edges", ...
-  std::string output;  // from "output" to the end of the line
+  std::string output;  // what the case says: its verdict, figures, likely cause
+  double score = 0.0;  // its points
 };
 
 std::vector<CaseLine> caseLines(const std::string& json);
+// The overall score.
+double score(const std::string& json);
 // Each case's status by its name.
 std::map<std::string, std::string> caseStatuses(const std::string& json);
 

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "core/number_format.h"
-#include "core/text_output.h"
 
 namespace pathway {
 namespace {
@@ -76,17 +76,27 @@ std::string brief(double value) {
 std::string number(const std::optional<double>& value) {
   return value ? number(*value) : "null";
 }
-std::string readOffJson(const std::optional<ReadOff>& value) {
-  if (!value) return "null";
-  return "{\"value\": " + number(value->value) +
-         ", \"extrapolated\": " + (value->extrapolated ? "true" : "false") +
-         ", \"at_most\": " + (value->atMost ? "true" : "false") + "}";
+using Json = nlohmann::ordered_json;  // keys in the order written
+
+// A number, or null where there is none (absent, NaN or infinite).
+Json jsonNumber(double value) {
+  return std::isfinite(value) ? Json(value) : Json(nullptr);
 }
-std::string fitJson(const std::optional<LogLogFit>& fit) {
-  if (!fit) return "null";
-  return "{\"slope\": " + number(fit->slope) + ", \"intercept\": " + number(fit->intercept) +
-         ", \"from_spp\": " + std::to_string(fit->fromSpp) +
-         ", \"to_spp\": " + std::to_string(fit->toSpp) + "}";
+Json jsonNumber(const std::optional<double>& value) {
+  return value ? jsonNumber(*value) : Json(nullptr);
+}
+Json readOffJson(const std::optional<ReadOff>& value) {
+  if (!value) return nullptr;
+  return {{"value", jsonNumber(value->value)},
+          {"extrapolated", value->extrapolated},
+          {"at_most", value->atMost}};
+}
+Json fitJson(const std::optional<LogLogFit>& fit) {
+  if (!fit) return nullptr;
+  return {{"slope", jsonNumber(fit->slope)},
+          {"intercept", jsonNumber(fit->intercept)},
+          {"from_spp", fit->fromSpp},
+          {"to_spp", fit->toSpp}};
 }
 
 }  // namespace
@@ -206,54 +216,59 @@ ChartSummary summarizeChart(const ChartSpec& spec, const ChartData& data) {
 }
 
 std::string summaryJson(const ChartSpec& spec, const ChartSummary& summary) {
-  std::ostringstream out;
-  out << "{\n  \"title\": " << jsonString(spec.title)
-      << ",\n  \"machine\": " << jsonString(summary.machine)
-      << ",\n  \"target_rel_mse\": " << number(kTargetRelMse)
-      << ",\n  \"rel_mse_epsilon\": " << number(kRelMseEpsilon) << ",\n  \"seeds\": " << spec.seeds
-      << ",\n  \"with_reference\": " << (spec.withReference ? "true" : "false")
-      << ",\n  \"equal_seconds\": " << number(summary.equalSeconds)
-      << ",\n  \"equal_rays\": " << number(summary.equalRays) << ",\n  \"lines\": [";
+  Json lines = Json::array();
   for (size_t i = 0; i < summary.lines.size(); ++i) {
     const ChartLine& line = summary.lines[i];
     const ChartConfig& config = *line.config;
-    out << (i ? "," : "") << "\n    {\"label\": " << jsonString(config.label)
-        << ", \"integrator\": " << jsonString(config.choices.integrator)
-        << ", \"description\": " << jsonString(line.description)
-        << ", \"group\": " << jsonString(config.group) << ", \"x\": " << number(config.x)
-        << ",\n     \"reference\": ";
+    Json reference = nullptr;
     if (line.reference)
-      out << "{\"label\": " << jsonString(spec.referenceConfigOf(config).label)
-          << ", \"spp\": " << line.reference->spp
-          << ", \"exr\": " << jsonString(line.reference->exrPath)
-          << ", \"png\": " << jsonString(line.reference->pngPath) << "}";
-    else
-      out << "null";
-    out << ",\n     \"rays_per_sample\": " << number(line.raysPerSample)
-        << ", \"fit_rel_mse_by_spp\": " << fitJson(line.relMseBySpp)
-        << ",\n     \"fit_rel_mse_by_seconds\": " << fitJson(line.relMseBySeconds)
-        << ", \"fit_mse_by_seconds\": " << fitJson(line.mseBySeconds)
-        << ",\n     \"seconds_to_target\": " << readOffJson(line.secondsToTarget);
-    if (!summary.relMseAtEqualSeconds.empty())
-      out << ",\n     \"rel_mse_at_equal_seconds\": "
-          << readOffJson(summary.relMseAtEqualSeconds[i])
-          << ", \"rmse_at_equal_seconds\": " << readOffJson(summary.rmseAtEqualSeconds[i])
-          << ", \"rel_mse_at_equal_rays\": " << readOffJson(summary.relMseAtEqualRays[i])
-          << ", \"rmse_at_equal_rays\": " << readOffJson(summary.rmseAtEqualRays[i]);
-    out << ",\n     \"points\": [";
-    for (size_t j = 0; j < line.points.size(); ++j) {
-      const ChartPoint& p = line.points[j];
-      out << (j ? "," : "") << "\n      {\"spp\": " << p.spp << ", \"renders\": " << p.renders
-          << ", \"seconds\": " << number(p.seconds) << ", \"seconds_low\": " << number(p.secondsLow)
-          << ", \"seconds_high\": " << number(p.secondsHigh) << ", \"rays\": " << number(p.rays)
-          << ", \"rel_mse\": " << number(p.relMse) << ", \"rel_mse_low\": " << number(p.relMseLow)
-          << ", \"rel_mse_high\": " << number(p.relMseHigh) << ", \"mse\": " << number(p.mse)
-          << ", \"efficiency\": " << number(p.efficiency) << "}";
+      reference = {{"label", spec.referenceConfigOf(config).label},
+                   {"spp", line.reference->spp},
+                   {"exr", line.reference->exrPath},
+                   {"png", line.reference->pngPath}};
+    Json entry = {{"label", config.label},
+                  {"integrator", config.choices.integrator},
+                  {"description", line.description},
+                  {"group", config.group},
+                  {"x", jsonNumber(config.x)},
+                  {"reference", reference},
+                  {"rays_per_sample", jsonNumber(line.raysPerSample)},
+                  {"fit_rel_mse_by_spp", fitJson(line.relMseBySpp)},
+                  {"fit_rel_mse_by_seconds", fitJson(line.relMseBySeconds)},
+                  {"fit_mse_by_seconds", fitJson(line.mseBySeconds)},
+                  {"seconds_to_target", readOffJson(line.secondsToTarget)}};
+    if (!summary.relMseAtEqualSeconds.empty()) {
+      entry["rel_mse_at_equal_seconds"] = readOffJson(summary.relMseAtEqualSeconds[i]);
+      entry["rmse_at_equal_seconds"] = readOffJson(summary.rmseAtEqualSeconds[i]);
+      entry["rel_mse_at_equal_rays"] = readOffJson(summary.relMseAtEqualRays[i]);
+      entry["rmse_at_equal_rays"] = readOffJson(summary.rmseAtEqualRays[i]);
     }
-    out << "]}";
+    Json points = Json::array();
+    for (const ChartPoint& p : line.points)
+      points.push_back({{"spp", p.spp},
+                        {"renders", p.renders},
+                        {"seconds", jsonNumber(p.seconds)},
+                        {"seconds_low", jsonNumber(p.secondsLow)},
+                        {"seconds_high", jsonNumber(p.secondsHigh)},
+                        {"rays", jsonNumber(p.rays)},
+                        {"rel_mse", jsonNumber(p.relMse)},
+                        {"rel_mse_low", jsonNumber(p.relMseLow)},
+                        {"rel_mse_high", jsonNumber(p.relMseHigh)},
+                        {"mse", jsonNumber(p.mse)},
+                        {"efficiency", jsonNumber(p.efficiency)}});
+    entry["points"] = points;
+    lines.push_back(entry);
   }
-  out << "\n  ]\n}\n";
-  return out.str();
+  const Json result = {{"title", spec.title},
+                       {"machine", summary.machine},
+                       {"target_rel_mse", kTargetRelMse},
+                       {"rel_mse_epsilon", kRelMseEpsilon},
+                       {"seeds", spec.seeds},
+                       {"with_reference", spec.withReference},
+                       {"equal_seconds", jsonNumber(summary.equalSeconds)},
+                       {"equal_rays", jsonNumber(summary.equalRays)},
+                       {"lines", lines}};
+  return result.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
 std::string summaryCsv(const ChartSummary& summary) {

@@ -4,9 +4,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "core/error.h"
+#include "core/number_format.h"
 #include "core/text_output.h"
 #include "grade/statistics.h"
 #include "io/image_io.h"
@@ -51,24 +53,10 @@ Color diverging(double x) {  // x in [-1, 1]
   return glm::mix(kNeutral, x < 0 ? kNegative : kPositive, a);
 }
 
-std::string fixed(double value, int digits) {
-  std::ostringstream out;
-  out.setf(std::ios::fixed);
-  out.precision(digits);
-  out << value;
-  return out.str();
-}
-
-std::string general(double value) {
-  std::ostringstream out;
-  out.precision(3);
-  out << value;
-  return out.str();
-}
-
 // Capped p-values (Bonferroni, Šidák) read "> 0.99", not "1".
 std::string pValue(double p) {
-  return p > kLargestShownP ? "&gt; " + general(kLargestShownP) : general(p);
+  return p > kLargestShownP ? "&gt; " + formatNumber("%.3g", kLargestShownP)
+                            : formatNumber("%.3g", p);
 }
 
 const char* causeOf(const CaseResult& c) {
@@ -86,9 +74,10 @@ std::string CaseResult::describe(const ComparisonSettings& settings) const {
   if (compared) out << comparison.describe(settings);
   if (diagnosis) out << diagnosis->line() << "\n";
   if (seconds > 0.0)
-    out << "your render: " << fixed(seconds, 2) << " s, " << fixed(raysPerSecond * 1e-6, 1)
-        << " M rays/s; the reference: " << fixed(referenceSeconds, 2) << " s, "
-        << fixed(referenceRaysPerSecond * 1e-6, 1) << " M rays/s\n";
+    out << "your render: " << formatNumber("%.2f", seconds) << " s, "
+        << formatNumber("%.1f", raysPerSecond * 1e-6)
+        << " M rays/s; the reference: " << formatNumber("%.2f", referenceSeconds) << " s, "
+        << formatNumber("%.1f", referenceRaysPerSecond * 1e-6) << " M rays/s\n";
   return out.str();
 }
 
@@ -210,9 +199,10 @@ void writeHtmlReport(const std::string& folder, const GradeSummary& summary,
        << "</style></head><body>\n";
   page << "<h1>" << escapeHtml(summary.title) << "</h1>\n";
   page << "<p class=\"" << (summary.passed() ? "pass" : "fail") << "\"><b>"
-       << fixed(summary.points(), 1) << " / " << fixed(summary.maxPoints(), 1) << " points</b>"
+       << formatNumber("%.1f", summary.points()) << " / "
+       << formatNumber("%.1f", summary.maxPoints()) << " points</b>"
        << " &middot; " << summary.cases.size() << (summary.cases.size() == 1 ? " case" : " cases")
-       << " &middot; graded in " << fixed(summary.seconds, 1) << " s</p>\n";
+       << " &middot; graded in " << formatNumber("%.1f", summary.seconds) << " s</p>\n";
   for (const std::string& note : summary.notes) page << "<p>" << escapeHtml(note) << "</p>\n";
   if (!summary.sandbox.empty()) page << "<p>" << escapeHtml(summary.sandbox) << "</p>\n";
   page << "<table><tr><th>case</th><th>verdict</th><th>worst tile p</th><th>omnibus p</th>"
@@ -226,8 +216,8 @@ void writeHtmlReport(const std::string& folder, const GradeSummary& summary,
          << (c.compared && c.comparison.hardFailures.empty() ? pValue(c.comparison.omnibusP)
                                                              : "&ndash;")
          << "</td><td>" << causeOf(c) << "</td><td>"
-         << (c.seconds > 0 ? fixed(c.seconds, 2) + " s" : "&ndash;") << "</td><td>"
-         << (c.referenceSeconds > 0 ? fixed(c.referenceSeconds, 2) + " s" : "&ndash;")
+         << (c.seconds > 0 ? formatNumber("%.2f", c.seconds) + " s" : "&ndash;") << "</td><td>"
+         << (c.referenceSeconds > 0 ? formatNumber("%.2f", c.referenceSeconds) + " s" : "&ndash;")
          << "</td></tr>\n";
   }
   page << "</table>\n";
@@ -271,12 +261,15 @@ void writeHtmlReport(const std::string& folder, const GradeSummary& summary,
            << "</td></tr><tr><td>failing tiles</td><td>" << k.failingTiles << " of "
            << k.tiles.size() << "</td></tr><tr><td>omnibus p (corrected)</td><td>"
            << pValue(k.omnibusP) << "</td></tr><tr><td>&Sigma;z&sup2; p per channel</td><td>"
-           << general(k.chiSquaredP[0]) << ", " << general(k.chiSquaredP[1]) << ", "
-           << general(k.chiSquaredP[2]) << "</td></tr><tr><td>mean-shift p per channel</td><td>"
-           << general(k.meanShiftP[0]) << ", " << general(k.meanShiftP[1]) << ", "
-           << general(k.meanShiftP[2]) << "</td></tr><tr><td>NaN / infinite pixels</td><td>"
-           << k.nonFinitePixels << "</td></tr><tr><td>degrees of freedom</td><td>"
-           << general(k.degreesOfFreedom) << "</td></tr></table>\n";
+           << formatNumber("%.3g", k.chiSquaredP[0]) << ", "
+           << formatNumber("%.3g", k.chiSquaredP[1]) << ", "
+           << formatNumber("%.3g", k.chiSquaredP[2])
+           << "</td></tr><tr><td>mean-shift p per channel</td><td>"
+           << formatNumber("%.3g", k.meanShiftP[0]) << ", " << formatNumber("%.3g", k.meanShiftP[1])
+           << ", " << formatNumber("%.3g", k.meanShiftP[2])
+           << "</td></tr><tr><td>NaN / infinite pixels</td><td>" << k.nonFinitePixels
+           << "</td></tr><tr><td>degrees of freedom</td><td>"
+           << formatNumber("%.3g", k.degreesOfFreedom) << "</td></tr></table>\n";
     }
   }
   page << "</body></html>\n";
@@ -295,29 +288,35 @@ void writeHtmlReport(const std::string& folder, const GradeSummary& summary,
 }
 
 std::string gradescopeResults(const GradeSummary& summary, const ComparisonSettings& settings) {
-  std::ostringstream out;
+  using Json = nlohmann::ordered_json;  // keys in the order written, as Gradescope shows them
   std::string overall = summary.title + "\n";
   for (const std::string& note : summary.notes) overall += note + "\n";
   if (!summary.sandbox.empty()) overall += summary.sandbox + "\n";
-  out << "{\n  \"score\": " << fixed(summary.points(), 2)
-      << ",\n  \"execution_time\": " << fixed(summary.seconds, 1)
-      << ",\n  \"output\": " << jsonString(overall) << ",\n  \"visibility\": \"visible\",\n"
-      << "  \"extra_data\": {\"sandbox\": " << jsonString(summary.sandbox) << "},\n"
-      << "  \"stdout_visibility\": \"hidden\",\n  \"tests\": [";
-  for (size_t i = 0; i < summary.cases.size(); ++i) {
-    const CaseResult& c = summary.cases[i];
-    out << (i ? "," : "") << "\n    {\"name\": " << jsonString(c.title)
-        << ", \"score\": " << fixed(c.points, 2) << ", \"max_score\": " << fixed(c.maxPoints, 2)
-        << ", \"status\": \"" << (c.passed ? "passed" : "failed")
-        << "\", \"output\": " << jsonString(c.describe(settings))
-        << ", \"visibility\": \"visible\", \"extra_data\": {\"image\": \""
-        << (!c.compared                     ? "none"
-            : c.comparison.passed(settings) ? "pass"
-                                            : "fail")
-        << "\", \"likely_cause\": \"" << causeOf(c) << "\", \"todos\": " << c.todos.size() << "}}";
+  // Points as the report shows them, to two decimals.
+  auto points = [](double value) { return std::round(value * 100.0) / 100.0; };
+  Json tests = Json::array();
+  for (const CaseResult& c : summary.cases) {
+    const char* image = !c.compared ? "none" : c.comparison.passed(settings) ? "pass" : "fail";
+    tests.push_back(
+        {{"name", c.title},
+         {"score", points(c.points)},
+         {"max_score", points(c.maxPoints)},
+         {"status", c.passed ? "passed" : "failed"},
+         {"output", c.describe(settings)},
+         {"visibility", "visible"},
+         {"extra_data",
+          {{"image", image}, {"likely_cause", causeOf(c)}, {"todos", c.todos.size()}}}});
   }
-  out << "\n  ]\n}\n";
-  return out.str();
+  const Json results = {{"score", points(summary.points())},
+                        {"execution_time", std::round(summary.seconds * 10.0) / 10.0},
+                        {"output", overall},
+                        {"visibility", "visible"},
+                        {"extra_data", {{"sandbox", summary.sandbox}}},
+                        {"stdout_visibility", "hidden"},
+                        {"tests", tests}};
+  // Invalid UTF-8 (a compiler's message cut inside a character, a stage printing bytes) becomes
+  // U+FFFD: JSON readers refuse invalid UTF-8.
+  return results.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
 void writeGradescopeResults(const std::string& path, const GradeSummary& summary,
