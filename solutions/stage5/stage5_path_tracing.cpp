@@ -11,9 +11,11 @@
 //    divided by q. The expected value is unchanged, and paths end without a hard depth cut.
 //
 // The maths each part needs is derived in a comment where that part is written: the uniform
-// point on a triangle in sampleLight, the area form of direct light in directLight, the path's
-// weights and Russian roulette above Li.
+// point on a triangle in sampleLight, the area form of direct light in directLightBeforeShadow,
+// the path's weights and Russian roulette above Li. Each is written once: the wavefront version
+// at the end of the file calls the same functions.
 #include <cmath>
+#include <optional>
 
 #include "render/stage_api.h"
 #include "render/wavefront.h"
@@ -46,6 +48,12 @@ LightSample sampleLight(const EmitterPicker& lights, float uPick, Vec2 uPoint) {
   light.pdfArea = pick.probability / e.area;
   return light;
 }
+
+// A next-event estimate before its shadow ray is traced.
+struct DirectLight {
+  Ray shadowRay;
+  Color value;  // what it adds when nothing blocks shadowRay
+};
 
 class PathTracer : public Integrator {
  public:
@@ -83,38 +91,33 @@ class PathTracer : public Integrator {
         break;
       }
       if (addEmission) radiance += throughput * hit->emitted;
-      if (maxDepth_ >= 0 && bounce >= maxDepth_) break;
+      if (depthReached(bounce)) break;
 
       const Color brdf = hit->albedo * kInvPi;
       if (nextEventEstimation_) radiance += throughput * directLight(*hit, brdf, samples, context);
 
-      // One continuation ray, cosine-weighted (stage 2).
-      const Vec3 local = stage2_.sampleCosineHemisphere(samples.next2D());
-      const float pdf = stage2_.cosineHemispherePdf(local.z);
-      if (pdf <= 0.0f) break;
-      throughput *= brdf * local.z / pdf;
-
-      if (bounce + 1 >= rouletteDepth_) {
-        // Russian roulette (derived above Li): survive with q, then divide by q.
-        const float q = std::fmin(0.95f, maxComponent(throughput));
-        if (samples.next1D() >= q) break;
-        throughput /= q;
-      }
-      ray = hit->spawnRay(Frame(hit->normal).toWorld(local));
+      const std::optional<Ray> next = continuation(*hit, brdf, bounce, throughput, samples);
+      if (!next) break;
+      ray = *next;
       kind = RayKind::Secondary;
       addEmission = !nextEventEstimation_;
     }
     return radiance;
   }
 
- private:
-  // Light arriving at `hit` straight from a point picked on the emitters, times the BRDF.
-  Color directLight(const SurfaceHit& hit, const Color& brdf, SampleStream& samples,
-                    const RenderContext& context) const {
+  // The steps of Li that the wavefront version (at the end of the file) takes too: each is
+  // written once, here.
+  bool depthReached(int bounce) const { return maxDepth_ >= 0 && bounce >= maxDepth_; }
+  bool nextEventEstimation() const { return nextEventEstimation_; }
+  // Next-event estimation at `hit` up to its shadow ray: nothing where the estimate is zero without
+  // a ray, otherwise the shadow ray and the light it brings (times the BRDF) when nothing blocks
+  // it.
+  std::optional<DirectLight> directLightBeforeShadow(const SurfaceHit& hit, const Color& brdf,
+                                                     SampleStream& samples) const {
     // Draw the numbers even when there is nothing to sample, so dimensions stay aligned.
     const float uPick = samples.next1D();
     const Vec2 uPoint = samples.next2D();
-    if (lights_.empty()) return Color(0.0f);
+    if (lights_.empty()) return std::nullopt;
     const LightSample light = sampleLight(lights_, uPick, uPoint);
 
     // Next-event estimation. The light reflected at x straight from the emitters is
@@ -131,18 +134,45 @@ class PathTracer : public Integrator {
     // only the side its front faces (cos θ_y > 0, θ_y measured from light.normal).
     const Vec3 toLight = light.position - hit.position;
     const float distanceSquared = glm::dot(toLight, toLight);
-    if (!(distanceSquared > 0.0f)) return Color(0.0f);
+    if (!(distanceSquared > 0.0f)) return std::nullopt;
     const Vec3 direction = toLight / std::sqrt(distanceSquared);
     const float cosSurface = glm::dot(hit.normal, direction);
     const float cosLight = glm::dot(light.normal, -direction);
     // A one-sided emitter lights only the side its front face looks at.
     const bool facing = cosLight > 0.0f || light.emitter->doubleSided;
-    if (cosSurface <= 0.0f || cosLight == 0.0f || !facing) return Color(0.0f);
+    if (cosSurface <= 0.0f || cosLight == 0.0f || !facing) return std::nullopt;
 
     const Ray shadowRay = hit.spawnRayTo(light.position, light.normal);
-    if (context.occluded(shadowRay, RayKind::Shadow)) return Color(0.0f);
     const float geometry = cosSurface * std::fabs(cosLight) / distanceSquared;
-    return light.emitter->emission * brdf * geometry / light.pdfArea;
+    return DirectLight{shadowRay, light.emitter->emission * brdf * geometry / light.pdfArea};
+  }
+
+  // The path's next ray from `hit`, `throughput` taking this bounce's weight (and 1/q where it
+  // survives the roulette); nothing where the path ends here.
+  std::optional<Ray> continuation(const SurfaceHit& hit, const Color& brdf, int bounce,
+                                  Color& throughput, SampleStream& samples) const {
+    // One continuation ray, cosine-weighted (stage 2).
+    const Vec3 local = stage2_.sampleCosineHemisphere(samples.next2D());
+    const float pdf = stage2_.cosineHemispherePdf(local.z);
+    if (pdf <= 0.0f) return std::nullopt;
+    throughput *= brdf * local.z / pdf;
+
+    if (bounce + 1 >= rouletteDepth_) {
+      // Russian roulette (derived above Li): survive with q, then divide by q.
+      const float q = std::fmin(0.95f, maxComponent(throughput));
+      if (samples.next1D() >= q) return std::nullopt;
+      throughput /= q;
+    }
+    return hit.spawnRay(Frame(hit.normal).toWorld(local));
+  }
+
+ private:
+  // Light arriving at `hit` straight from a point picked on the emitters, times the BRDF.
+  Color directLight(const SurfaceHit& hit, const Color& brdf, SampleStream& samples,
+                    const RenderContext& context) const {
+    const std::optional<DirectLight> light = directLightBeforeShadow(hit, brdf, samples);
+    if (!light || context.occluded(light->shadowRay, RayKind::Shadow)) return Color(0.0f);
+    return light->value;
   }
 
   int maxDepth_;  // most bounces; -1: no limit (Russian roulette alone ends paths)
@@ -162,15 +192,11 @@ const bool registered = registerStage<PathTracer>(stage5());
 // each sample's stream in the same order, the same expressions, the radiance summed in the same
 // order (a bounce's NEE term is added once its shadow ray is answered, before the next bounce's).
 // So its image equals stage5@ref's wherever Embree's packets report the hits single rays do
-// (test: WavefrontStages.*). A change to the maths above goes into both.
+// (test: WavefrontStages.*). Its steps are the path tracer's own (depthReached,
+// directLightBeforeShadow, continuation): only the order in which rays are traced is its own.
 class WavefrontPathTracer : public WavefrontIntegrator {
  public:
-  explicit WavefrontPathTracer(const StageSetup<Stage5Params>& setup)
-      : maxDepth_(setup.params.maxDepth),
-        rouletteDepth_(setup.params.rouletteDepth),
-        nextEventEstimation_(setup.params.nextEventEstimation),
-        lights_(setup.scene, setup.params.lightPick),
-        stage2_(setup.kit.stage2()) {}
+  explicit WavefrontPathTracer(const StageSetup<Stage5Params>& setup) : path_(setup) {}
 
   void LiBatch(CameraSampleBatch& batch, const RenderContext& context) const override {
     const size_t n = batch.size();
@@ -198,28 +224,24 @@ class WavefrontPathTracer : public WavefrontIntegrator {
           continue;
         }
         if (addEmission) radiance += throughput * hit->emitted;
-        if (maxDepth_ >= 0 && bounce >= maxDepth_) continue;
+        if (path_.depthReached(bounce)) continue;
 
         const Color brdf = hit->albedo * kInvPi;
         SampleStream& samples = batch.samples[i];
-        if (nextEventEstimation_) {
+        if (path_.nextEventEstimation()) {
           w.neeThroughput[i] = throughput;
-          if (prepareDirectLight(*hit, brdf, samples, w.shadowRays[i], w.neeValue[i]))
+          if (const auto light = path_.directLightBeforeShadow(*hit, brdf, samples)) {
+            w.shadowRays[i] = light->shadowRay;
+            w.neeValue[i] = light->value;
             w.shadowed.push_back(i);
-          else
+          } else {
             radiance += throughput * Color(0.0f);  // as stage5@ref adds a zero term
+          }
         }
 
-        const Vec3 local = stage2_.sampleCosineHemisphere(samples.next2D());
-        const float pdf = stage2_.cosineHemispherePdf(local.z);
-        if (pdf <= 0.0f) continue;
-        throughput *= brdf * local.z / pdf;
-        if (bounce + 1 >= rouletteDepth_) {
-          const float q = std::fmin(0.95f, maxComponent(throughput));
-          if (samples.next1D() >= q) continue;
-          throughput /= q;
-        }
-        w.rays[i] = hit->spawnRay(Frame(hit->normal).toWorld(local));
+        const std::optional<Ray> next = path_.continuation(*hit, brdf, bounce, throughput, samples);
+        if (!next) continue;
+        w.rays[i] = *next;
         w.next.push_back(i);
       }
 
@@ -230,7 +252,7 @@ class WavefrontPathTracer : public WavefrontIntegrator {
       }
       w.active.swap(w.next);
       kind = RayKind::Secondary;
-      addEmission = !nextEventEstimation_;
+      addEmission = !path_.nextEventEstimation();
     }
   }
 
@@ -255,39 +277,7 @@ class WavefrontPathTracer : public WavefrontIntegrator {
     return w;
   }
 
-  // directLight (above) up to its shadow ray: draws the same numbers, and returns false where
-  // it returns zero without a ray. Otherwise `shadowRay`
-  // is the ray to trace and `value` the term to add when nothing blocks it.
-  bool prepareDirectLight(const SurfaceHit& hit, const Color& brdf, SampleStream& samples,
-                          Ray& shadowRay, Color& value) const {
-    const float uPick = samples.next1D();
-    const Vec2 uPoint = samples.next2D();
-    if (lights_.empty()) return false;
-    const LightSample light = sampleLight(lights_, uPick, uPoint);
-    const EmissiveTriangle& e = *light.emitter;
-    const Vec3& lightPosition = light.position;
-    const float pdfArea = light.pdfArea;
-
-    const Vec3 toLight = lightPosition - hit.position;
-    const float distanceSquared = glm::dot(toLight, toLight);
-    if (!(distanceSquared > 0.0f)) return false;
-    const Vec3 direction = toLight / std::sqrt(distanceSquared);
-    const float cosSurface = glm::dot(hit.normal, direction);
-    const float cosLight = glm::dot(e.normal, -direction);
-    const bool facing = cosLight > 0.0f || e.doubleSided;
-    if (cosSurface <= 0.0f || cosLight == 0.0f || !facing) return false;
-
-    shadowRay = hit.spawnRayTo(lightPosition, e.normal);
-    const float geometry = cosSurface * std::fabs(cosLight) / distanceSquared;
-    value = e.emission * brdf * geometry / pdfArea;
-    return true;
-  }
-
-  int maxDepth_;
-  int rouletteDepth_;
-  bool nextEventEstimation_;
-  EmitterPicker lights_;
-  const Stage2Functions& stage2_;
+  PathTracer path_;
 };
 
 const bool registeredWavefront = registerWavefrontStage<WavefrontPathTracer>(stage5());

@@ -237,15 +237,15 @@ pathway_mutant(h_s5_continuation_no_pdf 5 stage5/stage5_path_tracing.cpp fail:in
 # Depth limit with > instead of >=: one bounce more than max-depth: extra indirect light.
 pathway_mutant(h_s5_depth_off_by_one 5 stage5/stage5_path_tracing.cpp fail:indirect
   "depth limit bounce > maxDepth instead of >= (one extra bounce)"
-  FROM "if (maxDepth_ >= 0 && bounce >= maxDepth_) break"
-  TO "if (maxDepth_ >= 0 && bounce > maxDepth_) break")
+  FROM "return maxDepth_ >= 0 && bounce >= maxDepth_"
+  TO "return maxDepth_ >= 0 && bounce > maxDepth_")
 
 # The continuation ray is offset by a fixed 0.01 along the normal: near creases it starts past
 # the neighbouring surface and light leaks: indirect light wrong.
 pathway_mutant(h_s5_fixed_normal_offset 5 stage5/stage5_path_tracing.cpp fail:indirect
   "continuation ray origin moved by a fixed 0.01 along the normal instead of spawnRay"
-  FROM "ray = hit->spawnRay(Frame(hit->normal).toWorld(local))"
-  TO "ray = Ray{hit->position + 0.01f * hit->normal, Frame(hit->normal).toWorld(local)}")
+  FROM "return hit.spawnRay(Frame(hit.normal).toWorld(local))"
+  TO "return Ray{hit.position + 0.01f * hit.normal, Frame(hit.normal).toWorld(local)}")
 
 # Roulette from one bounce earlier than specified: still unbiased (divides by q), so right on
 # average; the image only differs in noise (and in which dimensions later numbers take).

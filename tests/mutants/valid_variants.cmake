@@ -384,11 +384,8 @@ pathway_mutant(v_s5_roulette_half_from_bounce2 5 stage5/stage5_path_tracing.cpp 
 pathway_mutant(v_s5_nee_solid_angle 5 stage5/stage5_path_tracing.cpp pass "NEE in solid-angle form: pdf_w = p_A d^2 / |cos_y|, term Le brdf cos_x / pdf_w"
   FROM "const float geometry = cosSurface * std::fabs(cosLight) / distanceSquared"
   TO "const float pdfSolidAngle = light.pdfArea * distanceSquared / std::fabs(cosLight)"
-  FROM "return light.emitter->emission * brdf * geometry / light.pdfArea"
-  TO "return light.emitter->emission * brdf * cosSurface / pdfSolidAngle"
-  FROM "value = e.emission * brdf * geometry / pdfArea"
-  TO "value = e.emission * brdf * cosSurface / pdfSolidAngle@SEMICOLON@
-    (void)pdfArea")
+  FROM "light.emitter->emission * brdf * geometry / light.pdfArea"
+  TO "light.emitter->emission * brdf * cosSurface / pdfSolidAngle")
 
 # (u1, u2) uniform on the square, reflected through (1/2, 1/2) when above the diagonal, is
 # uniform on the lower triangle; the affine map to the emitter keeps it uniform: density 1/area,
@@ -432,5 +429,5 @@ class PathTracer : public Integrator {"
   TO "const Vec3 local = sampleConcentricCosine(samples.next2D())"
   FROM "const float pdf = stage2_.cosineHemispherePdf(local.z)"
   TO "const float pdf = local.z > 0.0f ? local.z * kInvPi : 0.0f"
-  FROM "hit->spawnRay(Frame(hit->normal).toWorld(local))"
-  TO "hit->spawnRay(gramSchmidtToWorld(hit->normal, local))")
+  FROM "hit.spawnRay(Frame(hit.normal).toWorld(local))"
+  TO "hit.spawnRay(gramSchmidtToWorld(hit.normal, local))")
