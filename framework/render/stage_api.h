@@ -1,5 +1,6 @@
 // Everything a stage file (assignments/ and solutions/) uses, in one include. What a stage may
-// call, with the signatures of the framework headers it comes from (no need to open them):
+// call, with the signatures of the framework headers it comes from (no need to open them; the
+// test StageApi.SignatureBlockMatchesTheHeaders checks this block against them):
 //
 // Small maths (core/math.h). Vec2, Vec3, Color are glm::vec2 / vec3 / vec3 (glm::dot,
 // glm::normalize work on them); constants kPi, kInvPi, kInfinity.
