@@ -15,7 +15,6 @@
 // the path's weights and Russian roulette above Li. Each is written once: the wavefront version
 // at the end of the file calls the same functions.
 #include <cmath>
-#include <optional>
 
 #include "render/stage_api.h"
 #include "render/wavefront.h"
