@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/json_text.h"
 #include "core/number_format.h"
 
 namespace pathway {
@@ -76,25 +76,19 @@ std::string brief(double value) {
 std::string number(const std::optional<double>& value) {
   return value ? number(*value) : "null";
 }
-using Json = nlohmann::ordered_json;  // keys in the order written
-
-// A number, or null where there is none (absent, NaN or infinite).
-Json jsonNumber(double value) {
-  return std::isfinite(value) ? Json(value) : Json(nullptr);
-}
+// A number, or null where there is none (jsonText writes NaN and infinities as null too).
 Json jsonNumber(const std::optional<double>& value) {
-  return value ? jsonNumber(*value) : Json(nullptr);
+  return value ? Json(*value) : Json(nullptr);
 }
 Json readOffJson(const std::optional<ReadOff>& value) {
   if (!value) return nullptr;
-  return {{"value", jsonNumber(value->value)},
-          {"extrapolated", value->extrapolated},
-          {"at_most", value->atMost}};
+  return {
+      {"value", value->value}, {"extrapolated", value->extrapolated}, {"at_most", value->atMost}};
 }
 Json fitJson(const std::optional<LogLogFit>& fit) {
   if (!fit) return nullptr;
-  return {{"slope", jsonNumber(fit->slope)},
-          {"intercept", jsonNumber(fit->intercept)},
+  return {{"slope", fit->slope},
+          {"intercept", fit->intercept},
           {"from_spp", fit->fromSpp},
           {"to_spp", fit->toSpp}};
 }
@@ -232,7 +226,7 @@ std::string summaryJson(const ChartSpec& spec, const ChartSummary& summary) {
                   {"group", config.group},
                   {"x", jsonNumber(config.x)},
                   {"reference", reference},
-                  {"rays_per_sample", jsonNumber(line.raysPerSample)},
+                  {"rays_per_sample", line.raysPerSample},
                   {"fit_rel_mse_by_spp", fitJson(line.relMseBySpp)},
                   {"fit_rel_mse_by_seconds", fitJson(line.relMseBySeconds)},
                   {"fit_mse_by_seconds", fitJson(line.mseBySeconds)},
@@ -247,10 +241,10 @@ std::string summaryJson(const ChartSpec& spec, const ChartSummary& summary) {
     for (const ChartPoint& p : line.points)
       points.push_back({{"spp", p.spp},
                         {"renders", p.renders},
-                        {"seconds", jsonNumber(p.seconds)},
-                        {"seconds_low", jsonNumber(p.secondsLow)},
-                        {"seconds_high", jsonNumber(p.secondsHigh)},
-                        {"rays", jsonNumber(p.rays)},
+                        {"seconds", p.seconds},
+                        {"seconds_low", p.secondsLow},
+                        {"seconds_high", p.secondsHigh},
+                        {"rays", p.rays},
                         {"rel_mse", jsonNumber(p.relMse)},
                         {"rel_mse_low", jsonNumber(p.relMseLow)},
                         {"rel_mse_high", jsonNumber(p.relMseHigh)},
@@ -265,10 +259,10 @@ std::string summaryJson(const ChartSpec& spec, const ChartSummary& summary) {
                        {"rel_mse_epsilon", kRelMseEpsilon},
                        {"seeds", spec.seeds},
                        {"with_reference", spec.withReference},
-                       {"equal_seconds", jsonNumber(summary.equalSeconds)},
-                       {"equal_rays", jsonNumber(summary.equalRays)},
+                       {"equal_seconds", summary.equalSeconds},
+                       {"equal_rays", summary.equalRays},
                        {"lines", lines}};
-  return result.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+  return jsonText(result);
 }
 
 std::string summaryCsv(const ChartSummary& summary) {

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "core/error.h"
+#include "core/json_text.h"
 #include "core/number_format.h"
 #include "core/text_output.h"
 #include "grade/statistics.h"
@@ -53,10 +53,14 @@ Color diverging(double x) {  // x in [-1, 1]
   return glm::mix(kNeutral, x < 0 ? kNegative : kPositive, a);
 }
 
+// p-values and other statistics, to three significant digits.
+std::string statistic(double value) {
+  return formatNumber("%.3g", value);
+}
+
 // Capped p-values (Bonferroni, Šidák) read "> 0.99", not "1".
 std::string pValue(double p) {
-  return p > kLargestShownP ? "&gt; " + formatNumber("%.3g", kLargestShownP)
-                            : formatNumber("%.3g", p);
+  return p > kLargestShownP ? "&gt; " + statistic(kLargestShownP) : statistic(p);
 }
 
 const char* causeOf(const CaseResult& c) {
@@ -261,15 +265,12 @@ void writeHtmlReport(const std::string& folder, const GradeSummary& summary,
            << "</td></tr><tr><td>failing tiles</td><td>" << k.failingTiles << " of "
            << k.tiles.size() << "</td></tr><tr><td>omnibus p (corrected)</td><td>"
            << pValue(k.omnibusP) << "</td></tr><tr><td>&Sigma;z&sup2; p per channel</td><td>"
-           << formatNumber("%.3g", k.chiSquaredP[0]) << ", "
-           << formatNumber("%.3g", k.chiSquaredP[1]) << ", "
-           << formatNumber("%.3g", k.chiSquaredP[2])
-           << "</td></tr><tr><td>mean-shift p per channel</td><td>"
-           << formatNumber("%.3g", k.meanShiftP[0]) << ", " << formatNumber("%.3g", k.meanShiftP[1])
-           << ", " << formatNumber("%.3g", k.meanShiftP[2])
-           << "</td></tr><tr><td>NaN / infinite pixels</td><td>" << k.nonFinitePixels
-           << "</td></tr><tr><td>degrees of freedom</td><td>"
-           << formatNumber("%.3g", k.degreesOfFreedom) << "</td></tr></table>\n";
+           << statistic(k.chiSquaredP[0]) << ", " << statistic(k.chiSquaredP[1]) << ", "
+           << statistic(k.chiSquaredP[2]) << "</td></tr><tr><td>mean-shift p per channel</td><td>"
+           << statistic(k.meanShiftP[0]) << ", " << statistic(k.meanShiftP[1]) << ", "
+           << statistic(k.meanShiftP[2]) << "</td></tr><tr><td>NaN / infinite pixels</td><td>"
+           << k.nonFinitePixels << "</td></tr><tr><td>degrees of freedom</td><td>"
+           << statistic(k.degreesOfFreedom) << "</td></tr></table>\n";
     }
   }
   page << "</body></html>\n";
@@ -288,7 +289,6 @@ void writeHtmlReport(const std::string& folder, const GradeSummary& summary,
 }
 
 std::string gradescopeResults(const GradeSummary& summary, const ComparisonSettings& settings) {
-  using Json = nlohmann::ordered_json;  // keys in the order written, as Gradescope shows them
   std::string overall = summary.title + "\n";
   for (const std::string& note : summary.notes) overall += note + "\n";
   if (!summary.sandbox.empty()) overall += summary.sandbox + "\n";
@@ -314,9 +314,7 @@ std::string gradescopeResults(const GradeSummary& summary, const ComparisonSetti
                         {"extra_data", {{"sandbox", summary.sandbox}}},
                         {"stdout_visibility", "hidden"},
                         {"tests", tests}};
-  // Invalid UTF-8 (a compiler's message cut inside a character, a stage printing bytes) becomes
-  // U+FFFD: JSON readers refuse invalid UTF-8.
-  return results.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+  return jsonText(results);
 }
 
 void writeGradescopeResults(const std::string& path, const GradeSummary& summary,

@@ -1,7 +1,6 @@
 #include "render/integrator_registry.h"
 
 #include <algorithm>
-#include <cctype>
 #include <map>
 
 #include "core/error.h"
@@ -46,23 +45,23 @@ std::map<std::pair<int, Variant>, std::string>& missingReasons() {
   return reasons;
 }
 
-// "stage3" (the student's), "stage3@ref" or "stage3@fast" (the reference): the stage and variant;
-// 0 for any other name.
-int stageNamed(const std::string& name, Variant& variant) {
-  const std::string prefix = "stage";
-  size_t end = prefix.size();
-  while (end < name.size() && std::isdigit(static_cast<unsigned char>(name[end]))) ++end;
-  if (name.compare(0, prefix.size(), prefix) != 0 || end == prefix.size() ||
-      end > 4 + prefix.size())
-    return 0;
-  const std::string suffix = name.substr(end);
-  if (suffix.empty())
-    variant = Variant::Student;
-  else if (suffix == "@ref" || suffix == kWavefrontSuffix)
-    variant = Variant::Reference;
-  else
-    return 0;
-  return std::stoi(name.substr(prefix.size(), end - prefix.size()));
+// "stage3@fast": the wavefront version of reference stage 3.
+std::string wavefrontIntegratorName(int stage) {
+  return "stage" + std::to_string(stage) + kWavefrontSuffix;
+}
+
+// The reason noted for the stage `name` names ("stage3", "stage3@ref", "stage3@fast"), and its
+// variant; "" when it names none that a loader noted.
+std::string missingReasonFor(const std::string& name, Variant& variant) {
+  for (const auto& [stageAndVariant, why] : missingReasons()) {
+    const auto [stage, noted] = stageAndVariant;
+    if (name == stageIntegratorName(stage, noted) ||
+        (noted == Variant::Reference && name == wavefrontIntegratorName(stage))) {
+      variant = noted;
+      return why;
+    }
+  }
+  return "";
 }
 
 IntegratorInfo stageInfo(const StageDeclaration& declaration, Variant variant, std::string name,
@@ -91,8 +90,8 @@ bool registerStageIntegrator(const StageDeclaration& stage, Variant variant,
 }
 
 bool registerWavefrontStageIntegrator(const StageDeclaration& stage, IntegratorFactory factory) {
-  IntegratorInfo info =
-      stageInfo(stage, Variant::Reference, stage.name + kWavefrontSuffix, std::move(factory));
+  IntegratorInfo info = stageInfo(stage, Variant::Reference, wavefrontIntegratorName(stage.number),
+                                  std::move(factory));
   info.wavefront = true;
   info.summary += " (wavefront: 16-ray packets, the reference's estimator)";
   return registerIntegrator(std::move(info));
@@ -114,7 +113,7 @@ std::string referenceStageMissing(int stage) {
 }
 
 std::string referenceIntegratorName(int stage, ReferenceTracing tracing) {
-  const std::string fast = "stage" + std::to_string(stage) + kWavefrontSuffix;
+  const std::string fast = wavefrontIntegratorName(stage);
   if (tracing == ReferenceTracing::Fastest && registry().count(fast)) return fast;
   return stageIntegratorName(stage, Variant::Reference);
 }
@@ -137,8 +136,7 @@ const IntegratorInfo& findIntegrator(std::string_view requested) {
   // A stage that is not here: say why (it did not compile, it changed since, the reference
   // library was refused).
   Variant variant = Variant::Student;
-  const int stage = stageNamed(name, variant);
-  const std::string why = stage ? missingStageReason(stage, variant) : "";
+  const std::string why = missingReasonFor(name, variant);
   if (!why.empty() && variant == Variant::Student)
     throw PathwayError("your " + name + " is not here: " + why);
   throw PathwayError("unknown integrator '" + name + "' (known: " + known +
