@@ -14,6 +14,7 @@
 #include "render/stage_api.h"
 #include "render/wavefront.h"
 #include "stages/stage2.h"  // the stage's parameters: setup.params.<field>
+#include "stages/stage3.h"  // stage 3's, for its wavefront version (the end of this file)
 
 namespace pathway {
 namespace {
@@ -35,8 +36,16 @@ float cosineHemispherePdf(float cosTheta) {
   return cosTheta > 0.0f ? cosTheta * kInvPi : 0.0f;
 }
 
-// One AO direction's estimate V(P, ω)·cos θ / (π·p(ω)).
+// One AO direction's estimate V(P, ω)·cos θ / (π·p(ω)), once its ray has told whether it is
+// `blocked`; `local` is the direction in the local frame, `pdf` > 0 its density.
 // It is the one-sample Monte Carlo estimate g(ω) / p(ω) of AO(P) = ∫_Ω g dω, g = V·cos θ / π.
+// Its own function because the wavefront version below uses it too, after tracing many rays.
+float ambientOcclusionEstimate(bool blocked, const Vec3& local, float pdf) {
+  const float visibility = blocked ? 0.0f : 1.0f;
+  return visibility * local.z / (kPi * pdf);
+}
+
+// One AO direction from u, traced up to `distance`, and its estimate.
 float ambientOcclusionSample(const RenderContext& context, const SurfaceHit& hit, Vec2 u,
                              float distance) {
   const Vec3 local = sampleCosineHemisphere(u);
@@ -46,8 +55,7 @@ float ambientOcclusionSample(const RenderContext& context, const SurfaceHit& hit
   // A unit direction and tMax = D: the ray looks for blockers up to distance D, no further.
   const Ray aoRay = hit.spawnRay(direction, distance);
   const bool blocked = context.occluded(aoRay, RayKind::Secondary);
-  const float visibility = blocked ? 0.0f : 1.0f;
-  return visibility * local.z / (kPi * pdf);
+  return ambientOcclusionEstimate(blocked, local, pdf);
 }
 
 class NestedAmbientOcclusion : public Integrator {
@@ -82,6 +90,11 @@ const bool registered = registerStage<NestedAmbientOcclusion>(
 // hit, all together. Each sample draws the same numbers and sums the same estimates in the same
 // order as above, so the images agree wherever packets and single rays report the same hits
 // (test: WavefrontStages.*).
+//
+// It is stage 3's wavefront version, "stage3@fast", too: stage 3's one AO ray per sample, from
+// dimensions 2-3 with stage 2's estimate, is this with M = 1. (Stage 3 draws that pair before its
+// eye ray and this after a hit; with nothing drawn after it, both hand the same numbers to the
+// same rays.)
 
 // ambientOcclusionSample (above), split where its ray is traced.
 class AmbientOcclusionWave {
@@ -89,7 +102,7 @@ class AmbientOcclusionWave {
   // Room for `count` AO estimates, none prepared yet.
   void reset(size_t count) {
     rays_.resize(count);
-    cosTheta_.resize(count);
+    local_.resize(count);
     pdf_.resize(count);
     blocked_.resize(count);
     traced_.clear();
@@ -99,11 +112,10 @@ class AmbientOcclusionWave {
   // `distance`. A direction with no density gets no ray; its estimate is 0, as in stage 2.
   void prepare(size_t k, const Stage2Functions& stage2, const SurfaceHit& hit, Vec2 u,
                float distance) {
-    const Vec3 local = stage2.sampleCosineHemisphere(u);
-    cosTheta_[k] = local.z;
-    pdf_[k] = stage2.cosineHemispherePdf(local.z);
+    local_[k] = stage2.sampleCosineHemisphere(u);
+    pdf_[k] = stage2.cosineHemispherePdf(local_[k].z);
     if (pdf_[k] <= 0.0f) return;
-    rays_[k] = hit.spawnRay(Frame(hit.normal).toWorld(local), distance);
+    rays_[k] = hit.spawnRay(Frame(hit.normal).toWorld(local_[k]), distance);
     traced_.push_back(static_cast<uint32_t>(k));
   }
 
@@ -113,26 +125,28 @@ class AmbientOcclusionWave {
   }
   const std::vector<uint32_t>& traced() const { return traced_; }
 
-  // V·cos θ / (π·p(ω)) for estimate k once traced; 0 where no ray was traced.
+  // Estimate k once traced; 0 where no ray was traced.
   float estimate(size_t k) const {
-    if (pdf_[k] <= 0.0f) return 0.0f;
-    const float visibility = blocked_[k] ? 0.0f : 1.0f;
-    return visibility * cosTheta_[k] / (kPi * pdf_[k]);
+    return pdf_[k] > 0.0f ? ambientOcclusionEstimate(blocked_[k], local_[k], pdf_[k]) : 0.0f;
   }
 
  private:
   std::vector<Ray> rays_;
-  std::vector<float> cosTheta_, pdf_;
+  std::vector<Vec3> local_;
+  std::vector<float> pdf_;
   std::vector<uint8_t> blocked_;
   std::vector<uint32_t> traced_;
 };
 
-class WavefrontNestedAmbientOcclusion : public WavefrontIntegrator {
+class WavefrontAmbientOcclusion : public WavefrontIntegrator {
  public:
-  explicit WavefrontNestedAmbientOcclusion(const StageSetup<Stage2Params>& setup)
+  explicit WavefrontAmbientOcclusion(const StageSetup<Stage2Params>& setup)
       : aoRays_(setup.params.aoRays),
         aoDistance_(setup.params.aoDistance),
         stage2_(setup.kit.stage2()) {}
+  // Stage 3: one AO ray per sample (M = 1).
+  explicit WavefrontAmbientOcclusion(const StageSetup<Stage3Params>& setup)
+      : aoRays_(1), aoDistance_(setup.params.aoDistance), stage2_(setup.kit.stage2()) {}
 
   // M estimates per sample: fewer samples per batch as M grows, so its AO rays stay in cache.
   size_t batchSize() const override {
@@ -176,10 +190,11 @@ class WavefrontNestedAmbientOcclusion : public WavefrontIntegrator {
 
   int aoRays_;                     // M
   float aoDistance_;               // D
-  const Stage2Functions& stage2_;  // this stage's own functions: the reference's stage 2
+  const Stage2Functions& stage2_;  // the kit's stage 2: the reference's
 };
 
-const bool registeredWavefront = registerWavefrontStage<WavefrontNestedAmbientOcclusion>(stage2());
+const bool registeredWavefront = registerWavefrontStage<WavefrontAmbientOcclusion>(stage2());
+const bool registeredWavefrontStage3 = registerWavefrontStage<WavefrontAmbientOcclusion>(stage3());
 
 }  // namespace
 }  // namespace pathway

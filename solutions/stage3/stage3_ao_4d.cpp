@@ -8,7 +8,6 @@
 // coordinates are stratified jointly, which the nested version cannot do: at equal ray counts the
 // 4D estimate is less noisy, and there is one knob (samples per pixel) instead of two.
 #include "render/stage_api.h"
-#include "render/wavefront.h"
 #include "stages/stage3.h"  // the stage's parameters: setup.params.<field>
 
 namespace pathway {
@@ -45,73 +44,8 @@ class AmbientOcclusion4D : public Integrator {
 
 const bool registered = registerStage<AmbientOcclusion4D>(stage3());
 
-// The wavefront version, "stage3@fast", for the renders that are not student code (never part of
-// the exercise): all the batch's eye rays in 16-ray Embree packets, then all its AO rays. Each
-// sample draws the same numbers and computes the same expressions as above with the reference's
-// stage 2 (a reference's kit always holds it), so the images agree wherever packets and single
-// rays report the same hits (test: WavefrontStages.*).
-class WavefrontAmbientOcclusion4D : public WavefrontIntegrator {
- public:
-  explicit WavefrontAmbientOcclusion4D(const StageSetup<Stage3Params>& setup)
-      : aoDistance_(setup.params.aoDistance), stage2_(setup.kit.stage2()) {}
-
-  void LiBatch(CameraSampleBatch& batch, const RenderContext& context) const override {
-    const size_t n = batch.size();
-    thread_local Scratch s;
-    s.hits.resize(n);
-    s.directions.resize(n);
-    s.eye.resize(n);
-    s.aoRays.resize(n);
-    s.cosTheta.resize(n);
-    s.pdf.resize(n);
-    s.blocked.resize(n);
-    batch.radiance.assign(n, Color(0.0f));
-    batch.rays.assign(n, 1);  // the eye ray
-    for (uint32_t i = 0; i < n; ++i) {
-      s.directions[i] = batch.samples[i].next2D();  // drawn before the eye ray, as stage3@ref
-      s.eye[i] = i;
-    }
-    intersectAll(context, batch.cameraRays, s.eye, RayKind::Primary, s.hits);
-    // Stage 2's ambientOcclusionSample, split where its ray is traced (same arithmetic).
-    s.traced.clear();
-    for (uint32_t i = 0; i < n; ++i) {
-      if (!s.hits[i]) continue;
-      const Vec3 local = stage2_.sampleCosineHemisphere(s.directions[i]);
-      s.cosTheta[i] = local.z;
-      s.pdf[i] = stage2_.cosineHemispherePdf(local.z);
-      if (s.pdf[i] <= 0.0f) continue;  // no ray: the estimate is 0
-      s.aoRays[i] = s.hits[i]->spawnRay(Frame(s.hits[i]->normal).toWorld(local), aoDistance_);
-      s.traced.push_back(i);
-    }
-    occludedAll(context, s.aoRays, s.traced, RayKind::Secondary, s.blocked);
-    for (const uint32_t i : s.traced) ++batch.rays[i];
-    for (uint32_t i = 0; i < n; ++i) {
-      if (!s.hits[i]) {
-        batch.radiance[i] = context.background();
-      } else if (s.pdf[i] > 0.0f) {
-        const float visibility = s.blocked[i] ? 0.0f : 1.0f;
-        batch.radiance[i] = Color(visibility * s.cosTheta[i] / (kPi * s.pdf[i]));
-      } else {
-        batch.radiance[i] = Color(0.0f);
-      }
-    }
-  }
-
- private:
-  struct Scratch {
-    std::vector<std::optional<SurfaceHit>> hits;
-    std::vector<Vec2> directions;
-    std::vector<Ray> aoRays;
-    std::vector<float> cosTheta, pdf;
-    std::vector<uint8_t> blocked;
-    std::vector<uint32_t> eye, traced;
-  };
-
-  float aoDistance_;
-  const Stage2Functions& stage2_;
-};
-
-const bool registeredWavefront = registerWavefrontStage<WavefrontAmbientOcclusion4D>(stage3());
+// Its wavefront version, "stage3@fast", is stage 2's with M = 1 (solutions/stage2): the same
+// numbers and the same estimate, so this file keeps the stage's one copy of its maths.
 
 }  // namespace
 }  // namespace pathway

@@ -210,8 +210,8 @@ Vec3 sampleCosineHemisphere(Vec2 u) {
 [[maybe_unused]] Vec3 malleyPolarCosine(Vec2 u) {"
   FROM "const Vec3 direction = Frame(hit.normal).toWorld(local)"
   TO "const Vec3 direction = frisvadToWorld(hit.normal, local)"
-  FROM "return visibility * local.z / (kPi * pdf)"
-  TO "return visibility * glm::dot(direction, hit.normal) / (kPi * pdf)")
+  FROM "return ambientOcclusionEstimate(blocked, local, pdf)"
+  TO "return ambientOcclusionEstimate(blocked, Vec3(0.0f, 0.0f, glm::dot(direction, hit.normal)), pdf)")
 
 # Ray j's first number is uniform in [j/M, (j+1)/M), so E[estimate_j] = M ∫ over that strip,
 # and the average over the M rays is the integral over [0,1)^2: unbiased, less noise. Each ray
