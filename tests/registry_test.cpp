@@ -27,7 +27,7 @@ std::string errorOf(Action action) {
 
 TEST(Registry, EveryStageRegistersUnderItsDeclaredNameSummaryAndParameters) {
   for (int stage = 1; stage <= kStageCount; ++stage) {
-    const StageDeclaration& declared = stageDeclaration(stage);
+    const StageInfo& declared = stageInfo(stage);
     EXPECT_EQ(declared.number, stage);
     EXPECT_EQ(declared.name, "stage" + std::to_string(stage));
     for (Variant variant : {Variant::Student, Variant::Reference}) {
@@ -51,11 +51,11 @@ TEST(Registry, EveryStageRegistersUnderItsDeclaredNameSummaryAndParameters) {
       EXPECT_FALSE(spec.help.empty()) << declared.name << " " << spec.name;
     }
   }
-  EXPECT_NE(errorOf([] { stageDeclaration(6); }).find("no stage 6"), std::string::npos);
+  EXPECT_NE(errorOf([] { stageInfo(6); }).find("no stage 6"), std::string::npos);
 }
 
 TEST(Registry, ParametersAreDeclaredByKind) {
-  const StageDeclaration& pathTracing = stageDeclaration(5);
+  const StageInfo& pathTracing = stageInfo(5);
   auto find = [&](const std::string& name) -> const OptionSpec& {
     for (const OptionSpec& spec : pathTracing.params)
       if (spec.name == name) return spec;
@@ -66,7 +66,7 @@ TEST(Registry, ParametersAreDeclaredByKind) {
   EXPECT_EQ(find("light-pick").kind, OptionKind::Choice);  // a choice, not a 0/1 switch
   EXPECT_EQ(find("light-pick").options, (std::vector<std::string>{"area", "power"}));
   EXPECT_EQ(find("light-pick").format(find("light-pick").defaultValue), "power");
-  EXPECT_EQ(stageDeclaration(2).params[1].kind, OptionKind::Real);
+  EXPECT_EQ(stageInfo(2).params[1].kind, OptionKind::Real);
 }
 
 TEST(Registry, ParameterValuesAreCheckedAgainstTheirDeclarations) {

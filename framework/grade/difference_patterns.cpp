@@ -81,7 +81,7 @@ std::map<std::string, Image> makeDifferencePatterns(const GradingCase& gradingCa
   patterns[pattern::kEscaped] = escapedBackground(gradingCase, tracer);
   const uint64_t seed = kPatternSeed;
   // What to vary comes from the stage's declared parameters (render/parameters.h, OptionRole).
-  const std::vector<OptionSpec>& declared = stageDeclaration(gradingCase.stage).params;
+  const std::vector<OptionSpec>& declared = stageInfo(gradingCase.stage).params;
   const OptionSpec* reach = optionWithRole(declared, OptionRole::AoReach);
   const OptionSpec* depth = optionWithRole(declared, OptionRole::RecursionDepth);
   const OptionSpec* nee = optionWithRole(declared, OptionRole::NextEventEstimation);

@@ -28,8 +28,7 @@ Submission findSubmission(const std::string& folder) {
   submission.folder = fs::absolute(folder).lexically_normal().string();
   submission.name = fs::path(submission.folder).filename().string();
   std::map<std::string, int> stageOfFile;
-  for (int stage = 1; stage <= kStageCount; ++stage)
-    stageOfFile[stageDeclaration(stage).file] = stage;
+  for (int stage = 1; stage <= kStageCount; ++stage) stageOfFile[stageInfo(stage).file] = stage;
   std::vector<fs::path> paths;
   for (const auto& entry : fs::recursive_directory_iterator(folder))
     if (entry.is_regular_file()) paths.push_back(entry.path());
@@ -46,7 +45,7 @@ Submission findSubmission(const std::string& folder) {
     }
   }
   for (int stage = 1; stage <= kStageCount; ++stage)
-    if (!submission.files.count(stage)) submission.missing.push_back(stageDeclaration(stage).file);
+    if (!submission.files.count(stage)) submission.missing.push_back(stageInfo(stage).file);
   return submission;
 }
 

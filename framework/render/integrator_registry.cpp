@@ -64,16 +64,16 @@ std::string missingReasonFor(const std::string& name, Variant& variant) {
   return "";
 }
 
-IntegratorInfo stageInfo(const StageDeclaration& declaration, Variant variant, std::string name,
-                         IntegratorFactory factory) {
+IntegratorInfo integratorInfoFor(const StageInfo& stage, Variant variant, std::string name,
+                                 IntegratorFactory factory) {
   IntegratorInfo info;
   info.name = std::move(name);
-  info.stage = declaration.number;
+  info.stage = stage.number;
   info.variant = variant;
-  info.summary = declaration.summary;
-  info.params = declaration.params;
-  info.defaultSampler = declaration.defaultSampler;
-  info.create = [name = info.name, check = declaration.check,
+  info.summary = stage.summary;
+  info.params = stage.params;
+  info.defaultSampler = stage.defaultSampler;
+  info.create = [name = info.name, check = stage.check,
                  factory = std::move(factory)](const IntegratorSetup& setup) {
     if (check) check(name, setup.params);
     return factory(setup);
@@ -83,15 +83,14 @@ IntegratorInfo stageInfo(const StageDeclaration& declaration, Variant variant, s
 
 }  // namespace
 
-bool registerStageIntegrator(const StageDeclaration& stage, Variant variant,
-                             IntegratorFactory factory) {
-  return registerIntegrator(
-      stageInfo(stage, variant, stageIntegratorName(stage.number, variant), std::move(factory)));
+bool registerStageIntegrator(const StageInfo& stage, Variant variant, IntegratorFactory factory) {
+  return registerIntegrator(integratorInfoFor(
+      stage, variant, stageIntegratorName(stage.number, variant), std::move(factory)));
 }
 
-bool registerWavefrontStageIntegrator(const StageDeclaration& stage, IntegratorFactory factory) {
-  IntegratorInfo info = stageInfo(stage, Variant::Reference, wavefrontIntegratorName(stage.number),
-                                  std::move(factory));
+bool registerWavefrontStageIntegrator(const StageInfo& stage, IntegratorFactory factory) {
+  IntegratorInfo info = integratorInfoFor(
+      stage, Variant::Reference, wavefrontIntegratorName(stage.number), std::move(factory));
   info.wavefront = true;
   info.summary += " (wavefront: 16-ray packets, the reference's estimator)";
   return registerIntegrator(std::move(info));

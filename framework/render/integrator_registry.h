@@ -51,11 +51,10 @@ struct IntegratorInfo {
 bool registerIntegrator(IntegratorInfo info);
 // Registers a stage of `variant` under its declared name, summary and parameters
 // (render/stage_definition.h), running the stage's own checks before `factory`.
-bool registerStageIntegrator(const StageDeclaration& stage, Variant variant,
-                             IntegratorFactory factory);
+bool registerStageIntegrator(const StageInfo& stage, Variant variant, IntegratorFactory factory);
 // Registers the wavefront version of a reference stage as "stageN@fast", with the stage's
 // declared summary and parameters.
-bool registerWavefrontStageIntegrator(const StageDeclaration& stage, IntegratorFactory factory);
+bool registerWavefrontStageIntegrator(const StageInfo& stage, IntegratorFactory factory);
 
 // Why stage `stage` of `variant` is missing, as the code that loads stage libraries found it
 // (stage_loading/): the registry knows what registered, not where stages come from.

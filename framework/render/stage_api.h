@@ -160,7 +160,7 @@ namespace {
 template <typename IntegratorType, typename Params>
 bool registerStage(const StageDefinition<Params>& stage) {
   return registerStageIntegrator(
-      stage.declaration(), PATHWAY_THIS_VARIANT,
+      stage.info(), PATHWAY_THIS_VARIANT,
       [&stage](const IntegratorSetup& setup) -> std::unique_ptr<Integrator> {
         if constexpr (std::is_constructible_v<IntegratorType, const StageSetup<Params>&>) {
           const Params params = stage.read(setup.params);

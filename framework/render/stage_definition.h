@@ -1,7 +1,8 @@
 // How a stage declares itself (framework/stages/stageN.h): its number, file, summary and usual
 // sampler, and a parameter table whose rows each fill one field of the stage's own typed struct.
-// StageDeclaration is the same without the typed struct, for the registry, the CLI, the viewer
-// and the grader (stages/stage_catalog.h lists the five).
+// StageInfo is the same without the typed struct, for the registry, the CLI, the viewer and
+// the grader (stages/stage_catalog.h lists the five): a stage is defined once, the rest of the
+// program reads its info.
 // A stage reads `setup.params.aoDistance`, so a misspelt parameter fails to compile; the CLI, the
 // viewer's panel and the metadata see the same rows as options (render/parameters.h).
 #pragma once
@@ -19,7 +20,7 @@
 
 namespace pathway {
 
-struct StageDeclaration {
+struct StageInfo {
   int number = 0;
   std::string name;  // "stage3"; the reference registers as "stage3@ref"
   std::string file;  // the stage's file, the same name in assignments/stageN and solutions/stageN
@@ -77,8 +78,8 @@ struct StageDefinition {
   }
 
   // The same, without the typed struct: what the catalog, the CLI and the viewer read.
-  StageDeclaration declaration() const {
-    StageDeclaration declared;
+  StageInfo info() const {
+    StageInfo declared;
     declared.number = number;
     declared.name = "stage" + std::to_string(number);
     declared.file = file;

@@ -92,7 +92,7 @@ inline void occludedAll(const RenderContext& context, const std::vector<Ray>& ra
 template <typename IntegratorType, typename Params>
 bool registerWavefrontStage(const StageDefinition<Params>& stage) {
   return registerWavefrontStageIntegrator(
-      stage.declaration(), [&stage](const IntegratorSetup& setup) -> std::unique_ptr<Integrator> {
+      stage.info(), [&stage](const IntegratorSetup& setup) -> std::unique_ptr<Integrator> {
         const Params params = stage.read(setup.params);
         return std::make_unique<IntegratorType>(StageSetup<Params>{params, setup.kit, setup.scene});
       });

@@ -16,7 +16,7 @@ void loadStudentStages() {
   if (loaded) return;
   loaded = true;
   for (int stage = 1; stage <= kStageCount; ++stage) {
-    const StageDeclaration& declared = stageDeclaration(stage);
+    const StageInfo& declared = stageInfo(stage);
     // Linked in already (a test program): nothing to load.
     if (findStageIntegrator(stage, Variant::Student)) continue;
     const fs::path source = fs::path(PATHWAY_STUDENT_SOURCES_DIR) / declared.name / declared.file;

@@ -9,10 +9,9 @@
 
 namespace pathway {
 
-const StageDeclaration& stageDeclaration(int stage) {
-  static const std::vector<StageDeclaration> stages = {
-      stage1().declaration(), stage2().declaration(), stage3().declaration(),
-      stage4().declaration(), stage5().declaration()};
+const StageInfo& stageInfo(int stage) {
+  static const std::vector<StageInfo> stages = {stage1().info(), stage2().info(), stage3().info(),
+                                                stage4().info(), stage5().info()};
   if (stage < 1 || stage > kStageCount)
     throw PathwayError("there is no stage " + std::to_string(stage) + " (stages are 1 to " +
                        std::to_string(kStageCount) + ")");

@@ -13,6 +13,6 @@ namespace pathway {
 constexpr int kStageCount = 5;
 
 // Stage `stage` in 1..kStageCount; throws PathwayError otherwise.
-const StageDeclaration& stageDeclaration(int stage);
+const StageInfo& stageInfo(int stage);
 
 }  // namespace pathway

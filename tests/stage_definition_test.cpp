@@ -19,15 +19,15 @@
 namespace pathway {
 namespace {
 
-TEST(StageDeclaration, TheTypedParametersHoldTheValuesGiven) {
-  const Stage5Params defaults = stage5().read(ParamValues(stageDeclaration(5).params));
+TEST(StageDefinition, TheTypedParametersHoldTheValuesGiven) {
+  const Stage5Params defaults = stage5().read(ParamValues(stageInfo(5).params));
   EXPECT_EQ(defaults.maxDepth, 5);
   EXPECT_EQ(defaults.rouletteDepth, 3);
   EXPECT_TRUE(defaults.nextEventEstimation);
   EXPECT_EQ(defaults.lightPick, EmitterWeighting::Power);
 
   const ParamValues given = resolveParams(
-      "stage5", stageDeclaration(5).params,
+      "stage5", stageInfo(5).params,
       {{"max-depth", "-1"}, {"rr-depth", "0"}, {"nee", "off"}, {"light-pick", "area"}});
   const Stage5Params typed = stage5().read(given);
   EXPECT_EQ(typed.maxDepth, -1);
@@ -35,18 +35,18 @@ TEST(StageDeclaration, TheTypedParametersHoldTheValuesGiven) {
   EXPECT_FALSE(typed.nextEventEstimation);
   EXPECT_EQ(typed.lightPick, EmitterWeighting::Area);
 
-  const Stage2Params ao = stage2().read(resolveParams(
-      "stage2", stageDeclaration(2).params, {{"ao-rays", "7"}, {"ao-distance", "0.125"}}));
+  const Stage2Params ao = stage2().read(
+      resolveParams("stage2", stageInfo(2).params, {{"ao-rays", "7"}, {"ao-distance", "0.125"}}));
   EXPECT_EQ(ao.aoRays, 7);
   EXPECT_EQ(ao.aoDistance, 0.125f);
-  const Stage4Params naive = stage4().read(ParamValues(stageDeclaration(4).params));
+  const Stage4Params naive = stage4().read(ParamValues(stageInfo(4).params));
   EXPECT_EQ(naive.maxRays, 1000000);
   // Stages 2 and 3 share one declaration of the AO distance.
-  EXPECT_EQ(stageDeclaration(2).params[1].defaultValue, stageDeclaration(3).params[0].defaultValue);
+  EXPECT_EQ(stageInfo(2).params[1].defaultValue, stageInfo(3).params[0].defaultValue);
 }
 
-TEST(StageDeclaration, StageFourRefusesAnExplodingRequestBeforeRendering) {
-  const StageDeclaration& naive = stageDeclaration(4);
+TEST(StageDefinition, StageFourRefusesAnExplodingRequestBeforeRendering) {
+  const StageInfo& naive = stageInfo(4);
   ASSERT_TRUE(naive.check);
   const ParamValues huge =
       resolveParams("stage4", naive.params, {{"branching", "1024"}, {"depth", "64"}});
@@ -62,9 +62,9 @@ std::string trimmed(const std::string& text) {
 
 // The grader's difference patterns and the viewer's depth keys find the parameters they vary by
 // role (render/parameters.h), so each role must sit on the parameter that does that job.
-TEST(StageDeclaration, EachRoleIsDeclaredWhereTheGraderAndViewerLookForIt) {
+TEST(StageDefinition, EachRoleIsDeclaredWhereTheGraderAndViewerLookForIt) {
   auto named = [](int stage, OptionRole role) -> std::string {
-    const OptionSpec* option = optionWithRole(stageDeclaration(stage).params, role);
+    const OptionSpec* option = optionWithRole(stageInfo(stage).params, role);
     return option ? option->name : "";
   };
   const std::vector<std::string> reach = {"", "ao-distance", "ao-distance", "", ""};
@@ -78,7 +78,7 @@ TEST(StageDeclaration, EachRoleIsDeclaredWhereTheGraderAndViewerLookForIt) {
   }
 }
 
-TEST(StageDeclaration, EachHeadersParameterTableMatchesItsDeclarations) {
+TEST(StageDefinition, EachHeadersParameterTableMatchesItsDeclarations) {
   for (int stage = 1; stage <= kStageCount; ++stage) {
     const std::string path =
         std::string(PATHWAY_SOURCE_DIR) + "/framework/stages/stage" + std::to_string(stage) + ".h";
@@ -92,7 +92,7 @@ TEST(StageDeclaration, EachHeadersParameterTableMatchesItsDeclarations) {
       for (std::string cell; std::getline(in, cell, '|');) cells.push_back(trimmed(cell));
       if (cells.size() >= 4 && cells[0] != "parameter") rows.push_back(cells);
     }
-    const std::vector<OptionSpec>& declared = stageDeclaration(stage).params;
+    const std::vector<OptionSpec>& declared = stageInfo(stage).params;
     ASSERT_EQ(rows.size(), declared.size()) << path;
     for (size_t i = 0; i < rows.size(); ++i) {
       const OptionSpec& spec = declared[i];
