@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/number_format.h"
 #include "core/stable_hash.h"
 #include "core/text_output.h"
 #include "engine/render_session.h"

@@ -1,7 +1,10 @@
 // One number as printf's `pattern` writes it ("%.3g", "%.2f s", "%+.1f%%"): the helper the panel,
-// the reports, the charts and the likely causes format their numbers with.
+// the reports, the charts and the likely causes format their numbers with; and a hash or
+// checksum as hexadecimal digits.
 #pragma once
 
+#include <cinttypes>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 
@@ -10,6 +13,13 @@ namespace pathway {
 inline std::string formatNumber(const char* pattern, double value) {
   char text[64];
   std::snprintf(text, sizeof text, pattern, value);
+  return text;
+}
+
+// `digits` hexadecimal digits, zero-padded: a hash (16) or a CRC-32 (8) as a key or file name.
+inline std::string hexDigits(uint64_t value, int digits = 16) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%0*" PRIx64, digits, value);
   return text;
 }
 

@@ -3,11 +3,8 @@
 // Not for anything an adversary chooses.
 #pragma once
 
-#include <cinttypes>
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
-#include <string>
 #include <string_view>
 
 namespace pathway {
@@ -31,13 +28,6 @@ class StableHash {
  private:
   uint64_t value_ = 0xcbf29ce484222325ull;
 };
-
-// 16 hexadecimal digits: a hash as a file name or a key.
-inline std::string hexDigits(uint64_t value) {
-  char text[17];
-  std::snprintf(text, sizeof text, "%016" PRIx64, value);
-  return text;
-}
 
 inline uint64_t stableHash(std::string_view text) {
   StableHash hash;

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/number_format.h"
 #include "core/stable_hash.h"
 #include "io/image_io.h"
 #include "viewer/stage_reference.h"
