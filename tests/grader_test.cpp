@@ -140,6 +140,16 @@ TEST_F(Grader, TwoRendersCompareDirectlyThroughTheirVariances) {
   EXPECT_NE(results().at(0).output.find("other settings (params"), std::string::npos);
 }
 
+// The diagnosis must not point a render without NEE at NEE: whether it used it comes from the
+// stage's NextEventEstimation option, as the render's metadata lists its parameters.
+TEST(NextEventEstimationOfARender, ComesFromTheStagesDeclaredOption) {
+  EXPECT_FALSE(usedNextEventEstimation(5, "max-depth=5 rr-depth=3 nee=off light-pick=area"));
+  EXPECT_TRUE(usedNextEventEstimation(5, "max-depth=5 rr-depth=3 nee=on light-pick=area"));
+  EXPECT_TRUE(usedNextEventEstimation(5, "max-depth=5"));  // not listed: its default, on
+  EXPECT_FALSE(usedNextEventEstimation(4, "branching=3 depth=2 max-rays=1000000"));
+  EXPECT_FALSE(usedNextEventEstimation(2, "ao-rays=4 ao-distance=0.25"));
+}
+
 TEST(CasePoints, AddUpToTheStageExactlyInWholeHundredths) {
   for (int count = 1; count <= 12; ++count) {
     long total = 0, smallest = 1 << 30, largest = 0;

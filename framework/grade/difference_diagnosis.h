@@ -70,8 +70,8 @@ struct DiagnosisInput {
   int replicates = 0;                    // behind the reference's mean
   int tileSize = 0;
   int stage = 0;  // the stage graded (0: not a stage), for what the explanations point at
-  // Stage 5 with next-event estimation on (the case's nee parameter): with it off, light from
-  // the emitters comes from paths that hit them, and nothing may point at NEE.
+  // The render sampled the emitters (stage 5's option with the NextEventEstimation role): with
+  // it off, light from the emitters comes from paths that hit them, and nothing may point at NEE.
   bool nextEventEstimation = true;
   std::map<std::string, const Image*> patterns;  // by pattern:: name
 };

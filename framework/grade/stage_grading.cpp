@@ -17,6 +17,8 @@
 #include "engine/pixel_in_progress.h"
 #include "grade/case_render_job.h"
 #include "grade/reference_comparison.h"
+#include "render/parameters.h"
+#include "stages/stage_catalog.h"
 
 namespace pathway {
 namespace {
@@ -212,8 +214,7 @@ void judgeAgainstReference(CaseResult& result, const LoadedImage& render,
     input.replicates = reference.record.replicates;
     input.tileSize = reference.record.tileSize;
     input.stage = result.stage;
-    input.nextEventEstimation =
-        (" " + render.metadata.params + " ").find(" nee=off ") == std::string::npos;
+    input.nextEventEstimation = usedNextEventEstimation(result.stage, render.metadata.params);
     for (const auto& [name, image] : reference.patterns) input.patterns[name] = &image;
     result.diagnosis = diagnoseDifference(input, result.comparison, settings);
   }
@@ -286,6 +287,19 @@ GradeSummary gradeStages(const GradingRun& run, const ComparisonSettings& settin
   }
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;
+}
+
+bool usedNextEventEstimation(int stage, const std::string& renderedParams) {
+  if (stage < 1) return false;
+  const OptionSpec* nee = optionWithRole(stageInfo(stage).params, OptionRole::NextEventEstimation);
+  if (!nee) return false;
+  std::map<std::string, std::string> given;
+  std::istringstream words(renderedParams);
+  for (std::string word; words >> word;) {
+    auto [name, value] = splitParamAssignment(word);
+    if (name == nee->name) given[name] = value;
+  }
+  return resolveParams("the render's metadata", {*nee}, given).number(nee->name) != 0.0;
 }
 
 }  // namespace pathway

@@ -50,6 +50,11 @@ double casePoints(int index, int count);
 // student code in.
 GradeSummary gradeStages(const GradingRun& run, const ComparisonSettings& settings);
 
+// Whether a render of `stage` with these parameters ("name=value ...", as its metadata has
+// them) sampled the emitters: the value of the option the stage declares with that role
+// (render/parameters.h), so the grader names no parameter; a stage without one never does.
+bool usedNextEventEstimation(int stage, const std::string& renderedParams);
+
 // Fills in `result` from a render and its reference: verdict, images, timings, TODOs that ran.
 void judgeAgainstReference(CaseResult& result, const LoadedImage& render,
                            const GradingReference& reference, const ComparisonSettings& settings);
