@@ -6,6 +6,11 @@
 // RayTracer, RenderContext, Renderer or Film. Whatever the framework spends beyond this tracer is
 // overhead that a faster framework could remove.
 //
+// It writes stage 5's estimator a second time on purpose (the one exception to one estimator per
+// stage): calling the stage's code would put the framework's machinery back in between, and the
+// ceiling would measure nothing. `pathway_bench ceiling` fails when the two images' means
+// disagree, so the copy cannot drift from stage 5 unnoticed.
+//
 // Its random numbers come from one PCG32 per pixel, or (`sobol`) are stage 5's default numbers:
 // the framework's Owen-scrambled Sobol' sampler, drawn in the order stage 5 draws them, so the
 // two tracers compute the same estimator with the same numbers and the only difference left is
