@@ -148,6 +148,9 @@ TEST(NextEventEstimationOfARender, ComesFromTheStagesDeclaredOption) {
   EXPECT_TRUE(usedNextEventEstimation(5, "max-depth=5"));  // not listed: its default, on
   EXPECT_FALSE(usedNextEventEstimation(4, "branching=3 depth=2 max-rays=1000000"));
   EXPECT_FALSE(usedNextEventEstimation(2, "ao-rays=4 ao-distance=0.25"));
+  // Two files compared: no case says which stage, the render's metadata may not either.
+  EXPECT_TRUE(usedNextEventEstimation(0, ""));
+  EXPECT_TRUE(usedNextEventEstimation(5, "nee=maybe"));  // not a value: the default stands
 }
 
 TEST(CasePoints, AddUpToTheStageExactlyInWholeHundredths) {

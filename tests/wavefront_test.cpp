@@ -8,9 +8,12 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <map>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -21,6 +24,7 @@
 #include "grade/grading_cases.h"
 #include "render/integrator_registry.h"
 #include "scene/gltf_loader.h"
+#include "stage_loading/stage_library.h"
 #include "stage_under_test.h"
 #include "test_scenes.h"
 
@@ -252,6 +256,36 @@ TEST(WavefrontStages, ReferencesRenderWithTheWavefrontVersionUnlessAskedForSingl
                                              "-p",          "nee=off"};
   EXPECT_EQ(expected, withFastestReference(given));
 }
+
+#ifdef PATHWAY_MUTANT_LIST
+// The grader's planted bugs are solution files built as a student's library. Loading one must
+// leave the reference's "stageN@fast" in place: a stage-2 bug's own wave would otherwise render
+// the references of stages 2 and 3 in that process (as `pathway grade --calibrate` does).
+TEST(WavefrontStages, ALibraryBuiltFromASolutionFileKeepsTheReferencesFastVersions) {
+  PATHWAY_REQUIRE_WAVEFRONT();
+  std::string library;
+  std::ifstream list(PATHWAY_MUTANT_LIST);
+  for (std::string line; std::getline(list, line);) {
+    if (line.rfind("s2_missing_cosine|", 0) != 0) continue;
+    std::vector<std::string> fields;
+    std::istringstream parts(line);
+    for (std::string field; std::getline(parts, field, '|');) fields.push_back(field);
+    if (fields.size() == 5) library = fields[3];
+  }
+  ASSERT_FALSE(library.empty()) << "s2_missing_cosine is not in " << PATHWAY_MUTANT_LIST;
+  // In a child process: a loaded library stays loaded, and its stage 2 replaces this one's.
+  EXPECT_EXIT(
+      {
+        const size_t before = registrationLog().size();
+        loadStageLibrary(library);
+        bool replaced = false;
+        for (size_t i = before; i < registrationLog().size(); ++i)
+          replaced = replaced || registrationLog()[i].find("@fast") != std::string::npos;
+        std::_Exit(replaced ? 1 : 0);
+      },
+      ::testing::ExitedWithCode(0), "");
+}
+#endif  // PATHWAY_MUTANT_LIST
 
 }  // namespace
 }  // namespace pathway

@@ -16,10 +16,11 @@ inline std::string formatNumber(const char* pattern, double value) {
   return text;
 }
 
-// `digits` hexadecimal digits, zero-padded: a hash (16) or a CRC-32 (8) as a key or file name.
+// A value in hexadecimal, zero-padded to `digits` (up to 16, all a 64-bit value can need): a hash
+// (16) or a CRC-32 (8) as a key or a file name.
 inline std::string hexDigits(uint64_t value, int digits = 16) {
   char text[17];
-  std::snprintf(text, sizeof text, "%0*" PRIx64, digits, value);
+  std::snprintf(text, sizeof text, "%0*" PRIx64, digits < 16 ? digits : 16, value);
   return text;
 }
 

@@ -214,7 +214,8 @@ void judgeAgainstReference(CaseResult& result, const LoadedImage& render,
     input.replicates = reference.record.replicates;
     input.tileSize = reference.record.tileSize;
     input.stage = result.stage;
-    input.nextEventEstimation = usedNextEventEstimation(result.stage, render.metadata.params);
+    input.nextEventEstimation =
+        usedNextEventEstimation(render.metadata.stage, render.metadata.params);
     for (const auto& [name, image] : reference.patterns) input.patterns[name] = &image;
     result.diagnosis = diagnoseDifference(input, result.comparison, settings);
   }
@@ -290,16 +291,21 @@ GradeSummary gradeStages(const GradingRun& run, const ComparisonSettings& settin
 }
 
 bool usedNextEventEstimation(int stage, const std::string& renderedParams) {
-  if (stage < 1) return false;
+  if (stage < 1 || stage > kStageCount) return true;  // no stage's option to say otherwise
   const OptionSpec* nee = optionWithRole(stageInfo(stage).params, OptionRole::NextEventEstimation);
   if (!nee) return false;
-  std::map<std::string, std::string> given;
+  ParamValues values({*nee});  // its default, unless the render lists a value it accepts
   std::istringstream words(renderedParams);
   for (std::string word; words >> word;) {
-    auto [name, value] = splitParamAssignment(word);
-    if (name == nee->name) given[name] = value;
+    const size_t equals = word.find('=');
+    if (equals == std::string::npos || word.substr(0, equals) != nee->name) continue;
+    try {
+      values.setText("the render's metadata", nee->name, word.substr(equals + 1));
+    } catch (const PathwayError&) {
+      // a value no render writes: the default stands
+    }
   }
-  return resolveParams("the render's metadata", {*nee}, given).number(nee->name) != 0.0;
+  return values.number(nee->name) != 0.0;
 }
 
 }  // namespace pathway

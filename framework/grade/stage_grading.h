@@ -52,7 +52,8 @@ GradeSummary gradeStages(const GradingRun& run, const ComparisonSettings& settin
 
 // Whether a render of `stage` with these parameters ("name=value ...", as its metadata has
 // them) sampled the emitters: the value of the option the stage declares with that role
-// (render/parameters.h), so the grader names no parameter; a stage without one never does.
+// (render/parameters.h), so the grader names no parameter; a stage without one never does, and a
+// render of no course stage (0) may have.
 bool usedNextEventEstimation(int stage, const std::string& renderedParams);
 
 // Fills in `result` from a render and its reference: verdict, images, timings, TODOs that ran.

@@ -89,13 +89,23 @@ inline void occludedAll(const RenderContext& context, const std::vector<Ray>& ra
 
 // Registers `IntegratorType`, built from a StageSetup<Params> like the stage's reference, as the
 // stage's wavefront version "stageN@fast" (in solutions/ only: it holds the stage's solution).
+// Only where the file is built as the reference: a library built from a solution file as a
+// student's (the grader's planted bugs) must not put its own wave in the reference's place.
+// In an unnamed namespace, like registerStage, because its body depends on that build.
+namespace {
 template <typename IntegratorType, typename Params>
 bool registerWavefrontStage(const StageDefinition<Params>& stage) {
+#if defined(PATHWAY_VARIANT_REFERENCE)
   return registerWavefrontStageIntegrator(
       stage.info(), [&stage](const IntegratorSetup& setup) -> std::unique_ptr<Integrator> {
         const Params params = stage.read(setup.params);
         return std::make_unique<IntegratorType>(StageSetup<Params>{params, setup.kit, setup.scene});
       });
+#else
+  (void)stage;
+  return false;
+#endif
 }
+}  // namespace
 
 }  // namespace pathway

@@ -81,7 +81,7 @@ class NestedAmbientOcclusion : public Integrator {
   float aoDistance_;  // D
 };
 
-// Stage 2 hands its hemisphere sampling and AO estimate on to stages 3-5.
+// Stage 2 hands its hemisphere sampling and ambientOcclusionSample on to stages 3-5.
 const bool registered = registerStage<NestedAmbientOcclusion>(
     stage2(), Stage2Functions{sampleCosineHemisphere, cosineHemispherePdf, ambientOcclusionSample});
 
