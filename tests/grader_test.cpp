@@ -7,11 +7,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "grade/stage_grading.h"
 #include "grade_results.h"
 #include "io/image_io.h"
+#include "mutant_list.h"
 #include "run_command.h"
 #include "stage_under_test.h"
 
@@ -176,36 +176,8 @@ TEST(CasePoints, AddUpToTheStageExactlyInWholeHundredths) {
 // ---- The mutant suite (tests/mutants/CMakeLists.txt) ----
 #ifdef PATHWAY_MUTANT_LIST
 
-struct Mutant {
-  std::string name;
-  int stage = 0;
-  std::string expect;  // fail, pass, crash or hang
-  // for fail: the likely cause the bug should read as (scripts/mutant-causes); for pass,
-  // "noisier": a valid estimator with more noise, which a note must point out
-  std::string cause;
-  std::string library;
-  std::string description;
-};
-
-std::vector<Mutant> mutants() {
-  std::vector<Mutant> list;
-  std::ifstream in(PATHWAY_MUTANT_LIST);
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> fields;
-    std::stringstream parts(line);
-    for (std::string field; std::getline(parts, field, '|');) fields.push_back(field);
-    if (fields.size() != 5) continue;
-    const size_t colon = fields[2].find(':');
-    list.push_back({fields[0], std::stoi(fields[1]), fields[2].substr(0, colon),
-                    colon == std::string::npos ? "" : fields[2].substr(colon + 1), fields[3],
-                    fields[4]});
-  }
-  return list;
-}
-
-void PrintTo(const Mutant& mutant, std::ostream* out) {
-  *out << mutant.name << " (" << mutant.description << ")";
-}
+using test::Mutant;
+using test::mutants;
 
 class GraderMutant : public Grader, public ::testing::WithParamInterface<Mutant> {};
 

@@ -10,10 +10,8 @@
 #include <atomic>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <map>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -22,6 +20,7 @@
 #include "engine/render_session.h"
 #include "engine/render_settings.h"
 #include "grade/grading_cases.h"
+#include "mutant_list.h"
 #include "render/integrator_registry.h"
 #include "scene/gltf_loader.h"
 #include "stage_loading/stage_library.h"
@@ -264,14 +263,8 @@ TEST(WavefrontStages, ReferencesRenderWithTheWavefrontVersionUnlessAskedForSingl
 TEST(WavefrontStages, ALibraryBuiltFromASolutionFileKeepsTheReferencesFastVersions) {
   PATHWAY_REQUIRE_WAVEFRONT();
   std::string library;
-  std::ifstream list(PATHWAY_MUTANT_LIST);
-  for (std::string line; std::getline(list, line);) {
-    if (line.rfind("s2_missing_cosine|", 0) != 0) continue;
-    std::vector<std::string> fields;
-    std::istringstream parts(line);
-    for (std::string field; std::getline(parts, field, '|');) fields.push_back(field);
-    if (fields.size() == 5) library = fields[3];
-  }
+  for (const test::Mutant& mutant : test::mutants())
+    if (mutant.name == "s2_missing_cosine") library = mutant.library;
   ASSERT_FALSE(library.empty()) << "s2_missing_cosine is not in " << PATHWAY_MUTANT_LIST;
   // In a child process: a loaded library stays loaded, and its stage 2 replaces this one's.
   EXPECT_EXIT(

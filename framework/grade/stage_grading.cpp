@@ -295,15 +295,12 @@ bool usedNextEventEstimation(int stage, const std::string& renderedParams) {
   const OptionSpec* nee = optionWithRole(stageInfo(stage).params, OptionRole::NextEventEstimation);
   if (!nee) return false;
   ParamValues values({*nee});  // its default, unless the render lists a value it accepts
-  std::istringstream words(renderedParams);
-  for (std::string word; words >> word;) {
-    const size_t equals = word.find('=');
-    if (equals == std::string::npos || word.substr(0, equals) != nee->name) continue;
-    try {
-      values.setText("the render's metadata", nee->name, word.substr(equals + 1));
-    } catch (const PathwayError&) {
-      // a value no render writes: the default stands
-    }
+  try {
+    const std::map<std::string, std::string> given = parseParamList(renderedParams);
+    if (const auto listed = given.find(nee->name); listed != given.end())
+      values.setText("the render's metadata", nee->name, listed->second);
+  } catch (const PathwayError&) {
+    // metadata no render writes: the default stands
   }
   return values.number(nee->name) != 0.0;
 }

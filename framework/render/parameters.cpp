@@ -222,4 +222,11 @@ std::pair<std::string, std::string> splitParamAssignment(const std::string& text
   return {text.substr(0, eq), text.substr(eq + 1)};
 }
 
+std::map<std::string, std::string> parseParamList(const std::string& described) {
+  std::map<std::string, std::string> given;
+  std::istringstream words(described);
+  for (std::string word; words >> word;) given.insert(splitParamAssignment(word));
+  return given;
+}
+
 }  // namespace pathway

@@ -120,5 +120,8 @@ ParamValues resolveParams(const std::string& owner, const std::vector<OptionSpec
 
 // "name=value" -> (name, value); throws PathwayError on text without '='.
 std::pair<std::string, std::string> splitParamAssignment(const std::string& text);
+// "name=value name=value", as describe() writes it and a render's metadata keeps it, -> name ->
+// text; throws PathwayError on a word without '='.
+std::map<std::string, std::string> parseParamList(const std::string& described);
 
 }  // namespace pathway

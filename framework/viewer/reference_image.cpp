@@ -5,7 +5,6 @@
 #include <exception>
 #include <filesystem>
 #include <map>
-#include <sstream>
 
 #include "core/error.h"
 #include "core/number_format.h"
@@ -67,10 +66,8 @@ ReferenceImage loadReference(const std::string& path, const ReferenceView& view)
     const IntegratorInfo* info = nullptr;
     for (const IntegratorInfo* known : allIntegrators())
       if (known->name == made.integrator) info = known;
-    std::map<std::string, std::string> given;
-    std::istringstream words(made.params);
     try {
-      for (std::string word; words >> word;) given.insert(splitParamAssignment(word));
+      const std::map<std::string, std::string> given = parseParamList(made.params);
       if (info) reference.view.params = resolveParams(info->name, info->params, given);
     } catch (const std::exception& error) {
       throw PathwayError(path + ": unreadable pathway metadata: " + error.what());
