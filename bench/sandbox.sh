@@ -4,7 +4,7 @@
 # times each (default 5):
 #   1. every grading case of the reference stages (pathway grade --grade-reference): the cost
 #      per case, since each stage's cases render in one sandboxed child;
-#   2. a class of 10 submissions (copies of solutions/), each built (the compiler sandboxed too)
+#   2. a class of 20 submissions (copies of solutions/), each built (the compiler sandboxed too)
 #      and graded (pathway grade --submissions).
 # Prints each run's wall time, the medians and the ratio auto / off, and what auto put in force.
 set -euo pipefail
@@ -14,7 +14,7 @@ pathway=$PWD/build/release/pathway
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 chmod 711 "$work"  # the sandboxed children of a root grader run as nobody and pass through it
-for i in $(seq -w 1 10); do
+for i in $(seq -w 1 20); do
   mkdir -p "$work/class/student$i"
   cp solutions/*/*.cpp "$work/class/student$i/"
 done
@@ -49,7 +49,7 @@ for what in cases class; do
   if [[ $what == cases ]]; then
     echo "== 1. the reference stages on all $cases grading cases, $rounds rounds in turns"
   else
-    echo "== 2. a class of 10 submissions built and graded ($((10 * cases)) cases), $rounds rounds in turns"
+    echo "== 2. a class of 20 submissions built and graded ($((20 * cases)) cases), $rounds rounds in turns"
   fi
   echo "   off:  ${off[*]} s (median $m_off s)"
   echo "   auto: ${auto[*]} s (median $m_auto s)"

@@ -1,19 +1,22 @@
 # Writes OUTPUT, the linker's dynamic list for the pathway program: the framework symbols that
 # stage libraries may use, found as the undefined symbols of OBJECTS (the stage files of
 # solutions/, and framework/stage_loading/stage_api_uses.cpp, which uses everything
-# render/stage_api.h documents) and of LIBRARY when it exists (a handout's compiled reference).
+# render/stage_api.h documents) and of LIBRARIES (a handout's compiled reference stages).
 # The program exports these and nothing else, so a stage file cannot call the rest of the
 # framework (such as the image readers): its library fails to load, naming the symbol.
-#   cmake -DNM=nm "-DOBJECTS=a.o;b.o" -DLIBRARY=lib.so -DOUTPUT=list -P this file
+#   cmake -DNM=nm "-DOBJECTS=a.o;b.o" "-DLIBRARIES=stage1.so;stage2.so" -DOUTPUT=list -P this file
+cmake_policy(SET CMP0057 NEW)  # if(IN_LIST)
 set(symbols "")
 set(files ${OBJECTS})
 set(dynamic "")
-if(LIBRARY AND EXISTS "${LIBRARY}")
-  list(APPEND files "${LIBRARY}")
-endif()
+foreach(library IN LISTS LIBRARIES)
+  if(EXISTS "${library}")
+    list(APPEND files "${library}")
+  endif()
+endforeach()
 foreach(file IN LISTS files)
   set(options -u -P)
-  if(file STREQUAL LIBRARY)
+  if(file IN_LIST LIBRARIES)
     list(APPEND options -D)
   endif()
   execute_process(COMMAND ${NM} ${options} "${file}" OUTPUT_VARIABLE listing

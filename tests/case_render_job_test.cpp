@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -28,6 +29,9 @@ CaseRenderJob sampleJob() {
   job.together = true;
   job.gradeReference = true;
   job.stageLibraries = {"/home/a student/build/stage1.so", "/home/a student/build/stage 2.so"};
+  job.referenceStages = {1, 2};
+  job.referenceFolder = "/srv/course files/reference";
+  job.reportsSandbox = true;
   return job;
 }
 
@@ -65,6 +69,27 @@ TEST(CaseRenderJob, ItsCommandLineReadsBackAsTheSameJob) {
   EXPECT_EQ(
       job.imagePath(*job.cases[1].gradingCase),
       "/tmp/a grading folder/work/" + job.cases[1].gradingCase->id() + "-18446744073709551615.exr");
+}
+
+// A child grading a student's stage N holds the reference's stages below N at most; one grading
+// the reference itself, stages 1..N; one grading the student's stages together, none.
+TEST(CaseRenderJob, AChildHoldsNoReferenceOfTheStageItGradesOrALaterOne) {
+  EXPECT_EQ(CaseRenderJob::referenceStagesFor(1, false, false), std::vector<int>{});
+  EXPECT_EQ(CaseRenderJob::referenceStagesFor(3, false, false), (std::vector<int>{1, 2}));
+  EXPECT_EQ(CaseRenderJob::referenceStagesFor(5, false, true), std::vector<int>{});
+  EXPECT_EQ(CaseRenderJob::referenceStagesFor(3, true, false), (std::vector<int>{1, 2, 3}));
+  EXPECT_EQ(CaseRenderJob::referenceStagesFor(2, true, true), (std::vector<int>{1, 2}));
+  const std::string command = CaseRenderJob::kCommand;
+  std::vector<std::string> arguments = sampleJob().toArguments();
+  const auto stageAt = std::find(arguments.begin(), arguments.end(), "--reference-stage");
+  ASSERT_NE(stageAt, arguments.end());
+  *(stageAt + 1) = "6";
+  EXPECT_EQ(refusal(arguments), command + ": --reference-stage '6' is not a stage (1 to 5)");
+  arguments = sampleJob().toArguments();
+  const auto folderAt = std::find(arguments.begin(), arguments.end(), "--reference-folder");
+  ASSERT_NE(folderAt, arguments.end());
+  arguments.erase(folderAt, folderAt + 2);
+  EXPECT_EQ(refusal(arguments), command + ": --reference-stage needs a --reference-folder");
 }
 
 TEST(CaseRenderJob, AnythingElseIsRefusedNamingWhat) {
@@ -115,16 +140,20 @@ TEST(CaseRenderJob, AnythingElseIsRefusedNamingWhat) {
             command + ": the command line does not start with " + command);
 }
 
-TEST(CaseRenderJob, TheProgramHandsItsCommandLineToTheJob) {
-  // Refused by the job's parser, not by CLI11, in one line.
+TEST(CaseRenderJob, TheChildProgramHandsItsCommandLineToTheJob) {
+  // Refused by the job's parser, in one line.
   const test::CommandOutcome refused = test::runCommand(
-      std::string(PATHWAY_BINARY) + " " + CaseRenderJob::kCommand + " --output o --bogus");
+      std::string(PATHWAY_CHILD_BINARY) + " " + CaseRenderJob::kCommand + " --output o --bogus");
   EXPECT_EQ(refused.exitCode, 1);
   EXPECT_NE(refused.output.find("pathway: error: " + std::string(CaseRenderJob::kCommand) +
                                 ": unknown argument '--bogus'"),
             std::string::npos)
       << refused.output;
-  // Not listed in --help.
+  // The course's program has no such command: it holds the reference stages, so no student
+  // code ever runs in it.
+  const test::CommandOutcome program =
+      test::runCommand(std::string(PATHWAY_BINARY) + " " + CaseRenderJob::kCommand + " --output o");
+  EXPECT_NE(program.exitCode, 0) << program.output;
   const test::CommandOutcome help = test::runCommand(std::string(PATHWAY_BINARY) + " --help");
   EXPECT_EQ(help.output.find(CaseRenderJob::kCommand), std::string::npos) << help.output;
 
@@ -137,8 +166,11 @@ TEST(CaseRenderJob, TheProgramHandsItsCommandLineToTheJob) {
   job.output = folder.string();
   job.scenes = PATHWAY_SCENES_DIR;
   job.gradeReference = true;
+  job.referenceStages =
+      CaseRenderJob::referenceStagesFor(job.cases[0].gradingCase->stage, true, false);
+  job.referenceFolder = PATHWAY_REFERENCE_LIBRARY_DIR;
   shareWithSandboxUser(folder.string(), job.sandbox);  // its child runs as nobody under root
-  std::string command = PATHWAY_BINARY;
+  std::string command = PATHWAY_CHILD_BINARY;
   for (const std::string& argument : job.toArguments()) command += " '" + argument + "'";
   const test::CommandOutcome rendered = test::runCommand(command);
   EXPECT_EQ(rendered.exitCode, 0) << rendered.output;

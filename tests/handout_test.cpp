@@ -80,7 +80,8 @@ TEST_F(Handout, ShipsTheReferenceCompiledBuildsPassesItsSuiteAndGradesAsTheAutog
   // What it holds: the reference compiled, no solutions, the student's README.
   EXPECT_FALSE(fs::exists(handout / "solutions"));
   EXPECT_FALSE(fs::exists(handout / "bench"));
-  EXPECT_TRUE(fs::exists(handout / "reference/libpathway_reference.so"));
+  for (int stage = 1; stage <= 5; ++stage)
+    EXPECT_TRUE(fs::exists(handout / ("reference/stage" + std::to_string(stage) + ".so"))) << stage;
   const std::string readme = test::readTextFile((handout / "README.md").string());
   EXPECT_EQ(readme, test::readTextFile(kSource + "/docs/student-readme.md"));
   for (const char* instructors : {"make-handout", "make-autograder", "--calibrate",

@@ -1,26 +1,33 @@
-// The reference stages compiled into a library (stage_loading/reference_library.h), as a handout
-// ships them: sealed for this platform and framework, no symbol table; a library that is missing,
-// cut short, corrupt, or made for another platform or framework version is refused with one message
-// naming the file and why, and the program works on without it; and in the full repository, the
-// library renders every stage bit for bit as the built-in reference does.
+// The reference stages compiled into libraries, one per stage (stage_loading/reference_library.h),
+// as the grader's child loads them and a handout ships them: sealed for this platform and
+// framework, no symbol table, library N registering stage N alone; a library that is missing, cut
+// short, corrupt, or made for another platform or framework version is refused with one message
+// naming the file and why, and the program works on without them; and in the full repository, the
+// libraries render every stage bit for bit as the built-in reference does.
 #include "stage_loading/reference_library.h"
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "io/image_io.h"
+#include "render/integrator_registry.h"
 #include "run_command.h"
+#include "stage_loading/stage_library.h"
 #include "stage_under_test.h"
+#include "stages/stage_catalog.h"
 
 namespace pathway {
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kLibrary = PATHWAY_REFERENCE_LIBRARY_FILE;
+const std::string kFolder = PATHWAY_REFERENCE_LIBRARY_DIR;
+const std::string kLibrary = kFolder + "/stage5.so";  // the one the seal tests change
 
 void writeFile(const fs::path& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
@@ -50,9 +57,20 @@ class ReferenceLibrary : public ::testing::Test {
     writeFile(path, bytes);
     return path;
   }
-  // `pathway <arguments>` run with the library `library` in place of the usual one.
-  test::CommandOutcome runWith(const std::string& library, const std::string& arguments) {
-    return test::runCommand("PATHWAY_REFERENCE_LIBRARY=" + library + " " + PATHWAY_BINARY + " " +
+  // A folder of the five libraries with stage 5's replaced by `bytes`; returns that file's path.
+  std::string folderWith(const std::string& name, const std::string& bytes) {
+    const fs::path folder = dir_ / name;
+    fs::create_directories(folder);
+    for (int stage = 1; stage < kStageCount; ++stage) {
+      const std::string file = "stage" + std::to_string(stage) + ".so";
+      fs::copy_file(kFolder + "/" + file, folder / file);
+    }
+    writeFile(folder / "stage5.so", bytes);
+    return (folder / "stage5.so").string();
+  }
+  // `pathway <arguments>` run with the libraries in `folder` in place of the usual ones.
+  test::CommandOutcome runWith(const std::string& folder, const std::string& arguments) {
+    return test::runCommand("PATHWAY_REFERENCE_LIBRARIES='" + folder + "' " + PATHWAY_BINARY + " " +
                             arguments);
   }
 
@@ -61,11 +79,16 @@ class ReferenceLibrary : public ::testing::Test {
 };
 
 TEST_F(ReferenceLibrary, IsSealedForThisBuildAndHasNoSymbolTable) {
-  EXPECT_EQ(referenceLibraryProblem(kLibrary), "");
-  EXPECT_EQ(bytes_.find(".symtab"), std::string::npos) << "the symbol table was not stripped";
-  const test::CommandOutcome exported = test::runCommand("nm -D --defined-only " + kLibrary);
-  EXPECT_EQ(exported.exitCode, 0) << exported.output;
-  EXPECT_EQ(exported.output, "") << "the library exports symbols of its own";
+  EXPECT_EQ(referenceLibrariesProblem(), "");
+  for (int stage = 1; stage <= kStageCount; ++stage) {
+    const std::string library = kFolder + "/stage" + std::to_string(stage) + ".so";
+    EXPECT_EQ(referenceLibraryProblem(library), "");
+    EXPECT_EQ(test::readTextFile(library).find(".symtab"), std::string::npos)
+        << library << ": the symbol table was not stripped";
+    const test::CommandOutcome exported = test::runCommand("nm -D --defined-only " + library);
+    EXPECT_EQ(exported.exitCode, 0) << exported.output;
+    EXPECT_EQ(exported.output, "") << library << " exports symbols of its own";
+  }
   // This process found its reference stages where the program finds them.
   const ReferenceStages& stages = loadReferenceStages();
   EXPECT_EQ(stages.source, test::kFullRepository ? ReferenceStages::Source::BuiltIn
@@ -101,21 +124,22 @@ TEST_F(ReferenceLibrary, ARefusedLibraryIsNamedWithItsReason) {
     EXPECT_NE(problem.find(reason), std::string::npos) << problem;
   }
   // A sealed file that is no library passes the seal and is refused by the loader.
-  const std::string text = copy("sealed_text.so", "not an ELF file\n");
+  const std::string text = folderWith("sealed_text", "not an ELF file\n");
   sealReferenceLibrary(text);
   EXPECT_EQ(referenceLibraryProblem(text), "");
-  const test::CommandOutcome loaded = runWith(text, "reference");
+  const test::CommandOutcome loaded = runWith(fs::path(text).parent_path().string(), "reference");
   EXPECT_NE(loaded.output.find(text + " cannot be loaded"), std::string::npos) << loaded.output;
 }
 
 TEST_F(ReferenceLibrary, TheProgramSaysWhatIsOffAndWorksOnWithoutIt) {
   std::string flipped = bytes_;
   flipped[bytes_.size() / 3] ^= 0x01;
-  const std::string corrupt = copy("corrupt.so", flipped);
+  const std::string corrupt = folderWith("corrupt", flipped);
+  const std::string folder = fs::path(corrupt).parent_path().string();
   const std::string image = (dir_ / "a.exr").string();
   // Said once, naming the file and why; the student's own stage renders as ever.
   const test::CommandOutcome render =
-      runWith(corrupt, "render -q -i stage1 --spp 1 --width 8 --height 8 -o " + image);
+      runWith(folder, "render -q -i stage1 --spp 1 --width 8 --height 8 -o " + image);
   EXPECT_EQ(render.exitCode, 0) << render.output;
   EXPECT_TRUE(fs::exists(image));
   const std::string note = "pathway: note: reference stages ";
@@ -123,7 +147,7 @@ TEST_F(ReferenceLibrary, TheProgramSaysWhatIsOffAndWorksOnWithoutIt) {
   EXPECT_EQ(render.output.find(note), render.output.rfind(note)) << "said more than once";
   EXPECT_NE(render.output.find(corrupt + " is corrupt"), std::string::npos) << render.output;
 
-  const test::CommandOutcome status = runWith(corrupt, "reference");
+  const test::CommandOutcome status = runWith(folder, "reference");
   EXPECT_NE(status.output.find(corrupt + " is corrupt"), std::string::npos) << status.output;
   if (test::kFullRepository) {  // the built-in reference stays
     EXPECT_EQ(status.exitCode, 0) << status.output;
@@ -132,17 +156,17 @@ TEST_F(ReferenceLibrary, TheProgramSaysWhatIsOffAndWorksOnWithoutIt) {
   }
   EXPECT_EQ(status.exitCode, 1) << status.output;
   EXPECT_NE(status.output.find("not available"), std::string::npos) << status.output;
-  const test::CommandOutcome list = runWith(corrupt, "render --list");
+  const test::CommandOutcome list = runWith(folder, "render --list");
   EXPECT_EQ(list.exitCode, 0);
   EXPECT_EQ(list.output.find("@ref"), std::string::npos) << list.output;
-  const test::CommandOutcome reference = runWith(corrupt, "render -q -i stage5@ref -o " + image);
+  const test::CommandOutcome reference = runWith(folder, "render -q -i stage5@ref -o " + image);
   EXPECT_EQ(reference.exitCode, 1);
   EXPECT_NE(reference.output.find("no reference stages: " + corrupt + " is corrupt"),
             std::string::npos)
       << reference.output;
   // The grader grades the stages together, and the report says why.
   const std::string report = (dir_ / "report").string();
-  runWith(corrupt, "grade -q --stage 2 --report " + report);
+  runWith(folder, "grade -q --stage 2 --report " + report);
   const std::string page = test::readTextFile(report + "/index.html");
   EXPECT_NE(page.find("graded together"), std::string::npos);
   EXPECT_NE(page.find("corrupt"), std::string::npos);
@@ -150,8 +174,8 @@ TEST_F(ReferenceLibrary, TheProgramSaysWhatIsOffAndWorksOnWithoutIt) {
 
 TEST_F(ReferenceLibrary, RendersEveryStageBitForBitAsTheBuiltInReference) {
   if (!test::kFullRepository) GTEST_SKIP() << "needs the reference built in, to compare with";
-  const test::CommandOutcome status = runWith(kLibrary, "reference");
-  ASSERT_NE(status.output.find("reference stages: from " + kLibrary), std::string::npos)
+  const test::CommandOutcome status = runWith(kFolder, "reference");
+  ASSERT_NE(status.output.find("reference stages: from " + kFolder), std::string::npos)
       << status.output;
   // Every reference stage, and a student stage on the reference's earlier stages.
   for (const std::string integrator : {"stage1@ref", "stage2@ref", "stage3@ref", "stage4@ref",
@@ -160,12 +184,41 @@ TEST_F(ReferenceLibrary, RendersEveryStageBitForBitAsTheBuiltInReference) {
                                   integrator + " -o " + (dir_ / "a.exr").string();
     ASSERT_EQ(test::runCommand(std::string(PATHWAY_BINARY) + " " + arguments).exitCode, 0);
     const LoadedImage builtIn = readImageFile((dir_ / "a.exr").string());
-    ASSERT_EQ(runWith(kLibrary, arguments).exitCode, 0);
+    ASSERT_EQ(runWith(kFolder, arguments).exitCode, 0);
     const LoadedImage library = readImageFile((dir_ / "a.exr").string());
     EXPECT_EQ(library.images.color.pixels, builtIn.images.color.pixels) << integrator;
     EXPECT_EQ(library.images.variance.pixels, builtIn.images.variance.pixels) << integrator;
     EXPECT_EQ(library.images.weight.pixels, builtIn.images.weight.pixels) << integrator;
     EXPECT_EQ(library.metadata.shadowRays, builtIn.metadata.shadowRays);
+  }
+}
+
+// Library N registers reference stage N, and its wavefront version where it has one, and nothing
+// else: the code of the earlier stages it carries registers nothing. (In a child process: the
+// libraries would replace this test program's built-in stages.)
+TEST_F(ReferenceLibrary, EachLibraryRegistersItsOwnStageAlone) {
+  for (int stage = 1; stage <= kStageCount; ++stage) {
+    // A copy: a handout's test program has loaded the originals already, and loading a file
+    // again registers nothing.
+    const std::string library =
+        copy("stage" + std::to_string(stage) + ".so",
+             test::readTextFile(kFolder + "/stage" + std::to_string(stage) + ".so"));
+    EXPECT_EXIT(
+        {
+          const size_t before = registrationLog().size();
+          loadReferenceStageLibrary(library, stage);
+          const std::vector<std::string>& log = registrationLog();
+          for (size_t i = before; i < log.size(); ++i) {
+            const IntegratorInfo& info = findIntegrator(log[i]);
+            if (info.stage != stage || info.variant != Variant::Reference) {
+              std::fprintf(stderr, "%s registered %s\n", library.c_str(), log[i].c_str());
+              std::exit(1);
+            }
+          }
+          std::exit(log.size() > before ? 0 : 2);
+        },
+        ::testing::ExitedWithCode(0), "")
+        << library;
   }
 }
 

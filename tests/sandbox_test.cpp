@@ -3,9 +3,11 @@
 // tests/hostile_test.cpp attacks it the way a submission would.
 #include "core/sandbox.h"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -138,36 +140,92 @@ bool markedProcessAlive(const std::string& marker) {
   return false;
 }
 
-// Under root the sandbox becomes nobody, unless nobody could not read what the policy lists
-// (a clone in /root): then auto stays root and says so, and require refuses naming the path.
-TEST(Sandbox, RootBecomesNobodyOnlyWhereNobodyCanRead) {
+// Under root the sandbox always becomes nobody (the grader stages what nobody must read), and the
+// state it reports is read back from the process after the change: its real user.
+TEST(Sandbox, RootAlwaysBecomesNobodyAndSaysSoFromInside) {
   if (::geteuid() != 0) GTEST_SKIP() << "only root changes user";
-  const fs::path dir = test::freshTestFolder("pathway_sandbox_user");
-  fs::create_directories(dir / "open/inner");
-  fs::create_directories(dir / "closed/inner");
-  fs::permissions(dir, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                           fs::perms::others_read | fs::perms::others_exec);
-  fs::permissions(dir / "closed", fs::perms::owner_all);
-  SandboxPolicy open, closed;
-  open.readable = {(dir / "open/inner").string()};
-  closed.readable = {(dir / "closed/inner").string()};
-  EXPECT_TRUE(sandboxUser(open).changes);
-  const SandboxUser stays = sandboxUser(closed);
-  EXPECT_FALSE(stays.changes);
-  EXPECT_EQ(stays.staysRootFor, (dir / "closed/inner").string());
-  if (probeSandbox({}, SandboxMode::Auto).missing.empty()) {
-    EXPECT_NE(probeSandbox(closed, SandboxMode::Auto).summary().find("user: stays root"),
-              std::string::npos);
-    try {
-      probeSandbox(closed, SandboxMode::Require);
-      ADD_FAILURE() << "require ran as root";
-    } catch (const PathwayError& error) {
-      EXPECT_NE(std::string(error.what())
-                    .find("nobody, who cannot read " + (dir / "closed/inner").string()),
-                std::string::npos)
-          << error.what();
-    }
-  }
+  EXPECT_TRUE(sandboxUser().changes);
+  if (!probeSandbox({}, SandboxMode::Auto).missing.empty())
+    GTEST_SKIP() << "this kernel cannot shut a program in completely";
+  SandboxedCommand command;
+  command.program = {"/usr/bin/id", "-u"};
+  std::string line = PATHWAY_BINARY;
+  for (const std::string& word : command.toArguments()) line += " '" + word + "'";
+  const test::CommandOutcome ran = test::runCommand(line);
+  EXPECT_EQ(ran.exitCode, 0) << ran.output;
+  EXPECT_EQ(ran.output, std::to_string(sandboxUser().uid) + "\n");
+}
+
+// Where no other user can be had (here: a user namespace that maps root alone, so uid 65534 does
+// not exist in it), auto keeps root but drops every capability, and require refuses.
+TEST(Sandbox, WhereNoOtherUserCanBeHadAutoDropsEveryCapabilityAndRequireRefuses) {
+  if (test::runCommand("unshare --user --map-root-user true").exitCode != 0)
+    GTEST_SKIP() << "no user namespaces here";
+  if (!probeSandbox({}, SandboxMode::Auto).missing.empty())
+    GTEST_SKIP() << "this kernel cannot shut a program in completely";
+  SandboxedCommand command;
+  command.program = {"/bin/grep", "-E", "^(Uid|CapEff|CapPrm|CapBnd)", "/proc/self/status"};
+  const auto run = [&](SandboxMode mode) {
+    command.mode = mode;
+    std::string line = "unshare --user --map-root-user " + std::string(PATHWAY_BINARY);
+    for (const std::string& word : command.toArguments()) line += " '" + word + "'";
+    return test::runCommand(line);
+  };
+  const test::CommandOutcome kept = run(SandboxMode::Auto);
+  EXPECT_EQ(kept.exitCode, 0) << kept.output;
+  EXPECT_NE(kept.output.find("Uid:\t0\t"), std::string::npos) << kept.output;
+  for (const char* set :
+       {"CapEff:\t0000000000000000", "CapPrm:\t0000000000000000", "CapBnd:\t0000000000000000"})
+    EXPECT_NE(kept.output.find(set), std::string::npos) << set << "\n" << kept.output;
+  const test::CommandOutcome refused = run(SandboxMode::Require);
+  EXPECT_NE(refused.exitCode, 0) << refused.output;
+  EXPECT_NE(refused.output.find("--sandbox require runs student code as uid"), std::string::npos)
+      << refused.output;
+}
+
+// A child starts clean: its own environment, /dev/null for input, and no descriptor of the
+// grader's but its output; the folder it writes in is watched, and past its quota it is stopped.
+TEST(ChildProcess, StartsWithNothingOfTheGradersButWhatItIsGiven) {
+  const fs::path dir = test::freshTestFolder("pathway_clean_child");
+  const fs::path secret = dir / "secret";
+  std::ofstream(secret) << "the grader's\n";
+  const int inherited = ::open(secret.c_str(), O_RDONLY);  // not close-on-exec
+  ASSERT_GE(inherited, 0);
+  ::setenv("PATHWAY_TEST_GRADER_TOKEN", "token-1234", 1);
+  ChildOptions options;
+  options.environment = untrustedChildEnvironment();
+  const ChildOutcome outcome =
+      runChild({"/bin/bash", "-c",
+                "echo \"token=$PATHWAY_TEST_GRADER_TOKEN\"; cat <&" + std::to_string(inherited) +
+                    " 2>&1 || echo closed; read -t 1 line && echo \"read=$line\" || echo no-input; "
+                    "ls /proc/self/fd | tr '\\n' ' '"},
+               30.0, (dir / "log").string(), options);
+  ::close(inherited);
+  ::unsetenv("PATHWAY_TEST_GRADER_TOKEN");
+  EXPECT_TRUE(outcome.succeeded()) << outcome.output;
+  EXPECT_NE(outcome.output.find("token=\n"), std::string::npos) << outcome.output;
+  EXPECT_EQ(outcome.output.find("the grader's"), std::string::npos) << outcome.output;
+  EXPECT_NE(outcome.output.find("closed"), std::string::npos) << outcome.output;
+  EXPECT_NE(outcome.output.find("no-input"), std::string::npos) << outcome.output;
+  // 0, 1, 2 and the descriptor ls reads /proc with: nothing else.
+  const std::string descriptors = "\n0 1 2 3 ";
+  ASSERT_GE(outcome.output.size(), descriptors.size());
+  EXPECT_EQ(outcome.output.substr(outcome.output.size() - descriptors.size()), descriptors)
+      << outcome.output;
+
+  // 40 files of 1 MiB where 8 MiB are allowed: stopped, and said so.
+  fs::create_directories(dir / "work");
+  options.watchedFolder = (dir / "work").string();
+  options.folderQuotaBytes = 8ull << 20;
+  const ChildOutcome filling =
+      runChild({"/bin/bash", "-c",
+                "for i in $(seq 40); do head -c 1048576 /dev/zero > " + (dir / "work").string() +
+                    "/f$i; sleep 0.05; done; echo all-written"},
+               60.0, (dir / "log2").string(), options);
+  EXPECT_TRUE(filling.overQuota) << filling.output;
+  EXPECT_FALSE(filling.succeeded());
+  EXPECT_EQ(filling.output.find("all-written"), std::string::npos) << filling.output;
+  EXPECT_NE(filling.describe(60.0).find("wrote more than 8 MiB"), std::string::npos);
   fs::remove_all(dir);
 }
 

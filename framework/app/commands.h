@@ -15,13 +15,12 @@ struct Command {
 
 // The command line's words after "--" (for pathway cluster, which passes them on).
 std::vector<std::string>& passedOnArguments();
-// The words of a command that reads its own command line (the grader's child, the sandbox's
-// launcher): all of them after the program's path, its name first. CLI11 parses only the name.
+// The words of a command that reads its own command line (the sandbox's launcher): all of them
+// after the program's path, its name first. CLI11 parses only the name.
 std::vector<std::string>& unparsedArguments();
 
 Command addRenderCommand(CLI::App& app);
 Command addGradeCommand(CLI::App& app);
-Command addCaseRenderCommand(CLI::App& app);    // hidden: the grader's child
 Command addSandboxedRunCommand(CLI::App& app);  // hidden: the grader's sandboxed compiler
 Command addChartCommand(CLI::App& app);
 Command addMergeCommand(CLI::App& app);

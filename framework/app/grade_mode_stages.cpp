@@ -7,7 +7,6 @@
 #include "app/grade_modes.h"
 #include "core/temporary_folder.h"
 #include "grade/class_grading.h"
-#include "render/integrator_registry.h"
 #include "stage_loading/reference_library.h"
 
 namespace pathway {
@@ -20,9 +19,10 @@ const std::string kStudentStagesFolder = PATHWAY_SOURCE_DIR "/assignments";
 int gradeStagesMode(const GradeOptions& options) {
   const ComparisonSettings settings;
   GradingRun run = gradingRun(options);
-  // Without reference stages (a handout whose library is missing or refused) there are none to
-  // put under yours: grade yours together, and say why.
-  const bool noReference = !findStageIntegrator(1, Variant::Reference);
+  // Without the reference stages' libraries (a handout whose libraries are missing or refused),
+  // the grader's child has none to put under yours: grade yours together, and say why.
+  const std::string referenceProblem = referenceLibrariesProblem();
+  const bool noReference = !referenceProblem.empty();
   if (noReference) run.together = true;
   GradeSummary summary;
   if (run.gradeReference || !run.stageLibraries.empty()) {
@@ -40,7 +40,7 @@ int gradeStagesMode(const GradeOptions& options) {
     if (summary.title.empty()) summary.title = "Pathway grading: your stages";  // none compiled
   }
   if (noReference && !options.together)
-    summary.notes.push_back("There are no reference stages here (" + referenceStagesProblem() +
+    summary.notes.push_back("There are no reference stages here (" + referenceProblem +
                             "), so your stages are graded together: a bug in an earlier stage "
                             "also fails the stages after it.");
   const std::string notHere = courseCasesNotHere(options.references);

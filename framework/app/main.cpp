@@ -8,17 +8,19 @@
 #include "app/commands.h"
 #include "core/error.h"
 #include "core/sandboxed_command.h"
-#include "grade/case_render_job.h"
+#include "render/registration_gate.h"
 #include "stage_loading/reference_library.h"
 #include "stage_loading/student_stages.h"
 
 int main(int argc, char** argv) {
+  // The stages built into the program have registered; from here on only the libraries it loads
+  // register, each as what it is loaded as (render/registration_gate.h).
+  pathway::endBuiltInRegistrations();
   CLI::App app{"Pathway: from pixel filtering to path tracing, one stage at a time."};
   app.require_subcommand(1);
   std::vector<pathway::Command> commands = {
       pathway::addRenderCommand(app), pathway::addGradeCommand(app), pathway::addChartCommand(app),
       pathway::addMergeCommand(app), pathway::addClusterCommand(app)};
-  commands.push_back(pathway::addCaseRenderCommand(app));    // hidden: the grader's child
   commands.push_back(pathway::addSandboxedRunCommand(app));  // hidden: its sandboxed compiler
   const pathway::Command reference = pathway::addReferenceCommand(app);
   commands.push_back(reference);
@@ -34,10 +36,8 @@ int main(int argc, char** argv) {
       pathway::passedOnArguments().assign(argv + i + 1, argv + argc);
       break;
     }
-  // The grader's child and the sandbox's launcher read their command lines themselves
-  // (grade/case_render_job.h, core/sandboxed_command.h).
-  if (argc > 1 && (std::string(argv[1]) == pathway::CaseRenderJob::kCommand ||
-                   std::string(argv[1]) == pathway::SandboxedCommand::kCommand)) {
+  // The sandbox's launcher reads its command line itself (core/sandboxed_command.h).
+  if (argc > 1 && std::string(argv[1]) == pathway::SandboxedCommand::kCommand) {
     parsed = 2;
     pathway::unparsedArguments().assign(argv + 1, argv + argc);
   }

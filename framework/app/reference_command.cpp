@@ -11,14 +11,9 @@ namespace {
 
 struct ReferenceOptions {
   std::string check;  // a library to check
-  std::string seal;   // a library to seal (the build's step after linking it)
 };
 
 int run(const ReferenceOptions& options) {
-  if (!options.seal.empty()) {
-    sealReferenceLibrary(options.seal);
-    return 0;
-  }
   if (!options.check.empty()) {
     const std::string problem = referenceLibraryProblem(options.check);
     std::printf("%s\n", problem.empty() ? (options.check + ": can be loaded here").c_str()
@@ -40,12 +35,11 @@ Command addReferenceCommand(CLI::App& app) {
   reference->footer(
       "Examples:\n"
       "  pathway reference                 built in, loaded from a library, or why not available\n"
-      "  pathway reference --check reference/libpathway_reference.so\n"
-      "A handout's reference stages come compiled in reference/libpathway_reference.so; the\n"
-      "environment variable PATHWAY_REFERENCE_LIBRARY names another file to load instead.");
+      "  pathway reference --check reference/stage3.so\n"
+      "A handout's reference stages come compiled in reference/stage1.so ... stage5.so; the\n"
+      "environment variable PATHWAY_REFERENCE_LIBRARIES names another folder to load instead.");
   reference->add_option("--check", options->check,
                         "Check that this reference library can be loaded by this program");
-  reference->add_option("--seal", options->seal)->group("");  // the build's step
   return {reference, [options] { return run(*options); }};
 }
 

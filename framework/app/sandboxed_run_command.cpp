@@ -6,6 +6,11 @@
 
 namespace pathway {
 
+std::vector<std::string>& unparsedArguments() {
+  static std::vector<std::string> arguments;
+  return arguments;
+}
+
 Command addSandboxedRunCommand(CLI::App& app) {
   CLI::App* launcher =
       app.add_subcommand(SandboxedCommand::kCommand, "Run a program in the grader's sandbox");

@@ -24,4 +24,11 @@ inline std::string hexDigits(uint64_t value, int digits = 16) {
   return text;
 }
 
+// A size in bytes in binary units: "4 GiB" where it is whole gibibytes, else mebibytes ("64 MiB").
+inline std::string bytesText(uint64_t bytes) {
+  if (bytes >= (1ull << 30) && bytes % (1ull << 30) == 0)
+    return std::to_string(bytes >> 30) + " GiB";
+  return std::to_string(bytes >> 20) + " MiB";
+}
+
 }  // namespace pathway

@@ -3,9 +3,13 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <grp.h>
+#include <linux/capability.h>
 #include <linux/sched.h>
+#include <linux/sockios.h>
 #include <pwd.h>
+#include <sched.h>
 #include <seccomp.h>
+#include <sys/ioctl.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/socket.h>
@@ -13,10 +17,14 @@
 #include <sys/syscall.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <memory>
 
 #include "core/error.h"
+#include "core/number_format.h"
 
 namespace pathway {
 namespace {
@@ -109,8 +117,8 @@ void applyLandlock(const SandboxPolicy& policy, int abi) {
   for (const std::string& path : readable) addPathRule(ruleset.fd, path, read, abi);
   // /dev/null is written to as well (a compiler's discarded output).
   addPathRule(ruleset.fd, "/dev/null", read | landlock::kWriteFile, abi);
-  const uint64_t write = read | landlock::kWriteFile | landlock::kRemoveFile |
-                         landlock::kRemoveDir | landlock::kMakeReg | landlock::kMakeDir |
+  const uint64_t write = read | landlock::kWriteFile | landlock::kMakeReg | landlock::kMakeDir |
+                         (policy.removesFiles ? landlock::kRemoveFile | landlock::kRemoveDir : 0) |
                          (abi >= 2 ? landlock::kRefer : 0) | (abi >= 3 ? landlock::kTruncate : 0);
   for (const std::string& folder : policy.writable) addPathRule(ruleset.fd, folder, write, abi);
   if (syscall(SYS_landlock_restrict_self, ruleset.fd, 0) != 0)
@@ -170,7 +178,49 @@ void applySeccomp(const SandboxPolicy& policy) {
                      SCMP_SYS(swapon),
                      SCMP_SYS(swapoff)})
     forbid(number);
+  // No IPC that could outlive the process or reach another child: System V shared memory,
+  // message queues and semaphores, and POSIX message queues (POSIX shared memory and named pipes
+  // are files, which Landlock keeps to the process's own folder; UNIX sockets are refused above).
+  for (int number : {SCMP_SYS(shmget), SCMP_SYS(shmat), SCMP_SYS(shmdt), SCMP_SYS(shmctl),
+                     SCMP_SYS(msgget), SCMP_SYS(msgsnd), SCMP_SYS(msgrcv), SCMP_SYS(msgctl),
+                     SCMP_SYS(semget), SCMP_SYS(semop), SCMP_SYS(semtimedop), SCMP_SYS(semctl),
+                     SCMP_SYS(mq_open), SCMP_SYS(mq_unlink), SCMP_SYS(mq_timedsend),
+                     SCMP_SYS(mq_timedreceive), SCMP_SYS(mq_notify), SCMP_SYS(mq_getsetattr)})
+    forbid(number);
+  // Another process's limits, priority, scheduling or memory placement: refused (a process may
+  // still set its own, which its libraries do; pid 0 means itself). Two children of one grader
+  // run as the same user, and would otherwise be each other's to slow down or starve.
+  const auto refuseUnlessZero = [&](int syscallNumber, unsigned argument) {
+    failed |= seccomp_rule_add(filter.get(), SCMP_ACT_ERRNO(EPERM), syscallNumber, 1,
+                               scmp_arg_cmp{argument, SCMP_CMP_NE, 0, 0});
+  };
+  refuseUnlessZero(SCMP_SYS(prlimit64), 0);
+  refuseUnlessZero(SCMP_SYS(setpriority), 0);  // PRIO_PROCESS only: not a group's, not a user's
+  refuseUnlessZero(SCMP_SYS(setpriority), 1);
+  for (int number : {SCMP_SYS(sched_setscheduler), SCMP_SYS(sched_setparam),
+                     SCMP_SYS(sched_setattr), SCMP_SYS(sched_setaffinity), SCMP_SYS(migrate_pages),
+                     SCMP_SYS(move_pages), SCMP_SYS(get_robust_list)})
+    refuseUnlessZero(number, 0);
+  for (int number : {SCMP_SYS(ioprio_set), SCMP_SYS(pidfd_open), SCMP_SYS(pidfd_send_signal),
+                     SCMP_SYS(pidfd_getfd), SCMP_SYS(process_madvise), SCMP_SYS(kcmp)})
+    failed |= seccomp_rule_add(filter.get(), SCMP_ACT_ERRNO(EPERM), number, 0);
   if (!policy.startsPrograms) {
+    // Signals to itself only (Landlock's signal scope does the same from ABI 6 on; this holds
+    // on older kernels too). raise() and abort() go through tgkill with this process's id. A
+    // descriptor's owner (F_SETOWN and their like) would have the kernel send SIGIO to anyone.
+    const auto self = static_cast<scmp_datum_t>(::getpid());
+    for (int number :
+         {SCMP_SYS(kill), SCMP_SYS(tgkill), SCMP_SYS(rt_sigqueueinfo), SCMP_SYS(rt_tgsigqueueinfo)})
+      failed |= seccomp_rule_add(filter.get(), SCMP_ACT_ERRNO(EPERM), number, 1,
+                                 SCMP_A0(SCMP_CMP_NE, self));
+    failed |= seccomp_rule_add(filter.get(), SCMP_ACT_ERRNO(EPERM), SCMP_SYS(tkill), 0);
+    for (int command : {F_SETOWN, F_SETOWN_EX, F_SETSIG})
+      failed |= seccomp_rule_add(filter.get(), SCMP_ACT_ERRNO(EPERM), SCMP_SYS(fcntl), 1,
+                                 SCMP_A1(SCMP_CMP_EQ, static_cast<scmp_datum_t>(command)));
+    for (unsigned long request :
+         {static_cast<unsigned long>(FIOSETOWN), static_cast<unsigned long>(SIOCSPGRP)})
+      failed |= seccomp_rule_add(filter.get(), SCMP_ACT_ERRNO(EPERM), SCMP_SYS(ioctl), 1,
+                                 SCMP_A1(SCMP_CMP_EQ, static_cast<scmp_datum_t>(request)));
     // Threads only: a clone without CLONE_THREAD is a new process. clone3 passes its flags in
     // memory a filter cannot read, so it answers "not implemented", and glibc falls back to clone.
     for (int number : {SCMP_SYS(fork), SCMP_SYS(vfork), SCMP_SYS(execve), SCMP_SYS(execveat)})
@@ -195,12 +245,6 @@ void setLimit(int resource, uint64_t value) {
     throw PathwayError(std::string("sandbox: setrlimit failed: ") + std::strerror(errno));
 }
 
-std::string bytesText(uint64_t bytes) {
-  if (bytes >= (1ull << 30) && bytes % (1ull << 30) == 0)
-    return std::to_string(bytes >> 30) + " GiB";
-  return std::to_string(bytes >> 20) + " MiB";
-}
-
 std::string limitsText(const SandboxPolicy& policy) {
   std::string text;
   auto add = [&text](const std::string& part) { text += (text.empty() ? "" : ", ") + part; };
@@ -214,6 +258,43 @@ std::string limitsText(const SandboxPolicy& policy) {
   if (policy.openFiles) add(std::to_string(policy.openFiles) + " open files");
   if (policy.fileBytes) add("files up to " + bytesText(policy.fileBytes));
   return text;
+}
+
+// Root that could not become another user keeps its uid but nothing of its power: every
+// capability leaves the bounding, ambient, effective, permitted and inheritable sets.
+void dropEveryCapability() {
+  for (int capability = 0; capability <= 63; ++capability)
+    ::prctl(PR_CAPBSET_DROP, capability, 0, 0, 0);  // EINVAL past the kernel's last: ignored
+  ::prctl(PR_CAP_AMBIENT, PR_CAP_AMBIENT_CLEAR_ALL, 0, 0, 0);
+  __user_cap_header_struct header{_LINUX_CAPABILITY_VERSION_3, 0};
+  __user_cap_data_struct none[2] = {};
+  if (syscall(SYS_capset, &header, none) != 0)
+    throw PathwayError(std::string("sandbox: could not drop root's capabilities: ") +
+                       std::strerror(errno));
+}
+
+// Whether `uid` exists in this process's user namespace (/proc/self/uid_map: "inside outside
+// count" lines; the initial namespace maps them all).
+bool uidMapped(unsigned uid) {
+  std::ifstream map("/proc/self/uid_map");
+  for (unsigned long long inside, outside, count; map >> inside >> outside >> count;)
+    if (uid >= inside && uid - inside < count) return true;
+  return false;
+}
+
+// "user: uid 65534 (not root)", "user: uid 0 (root, without capabilities)": as the kernel sees
+// this process now.
+std::string actualUser() {
+  uid_t real = 0, effective = 0, saved = 0;
+  ::getresuid(&real, &effective, &saved);
+  if (real != 0 && effective != 0 && saved != 0)
+    return "user: uid " + std::to_string(effective) + " (not root)";
+  __user_cap_header_struct header{_LINUX_CAPABILITY_VERSION_3, 0};
+  __user_cap_data_struct held[2] = {};
+  const bool none = syscall(SYS_capget, &header, held) == 0 && held[0].effective == 0 &&
+                    held[1].effective == 0 && held[0].permitted == 0 && held[1].permitted == 0;
+  return std::string("user: uid 0 (root, ") +
+         (none ? "without capabilities)" : "with its capabilities)");
 }
 
 }  // namespace
@@ -262,10 +343,6 @@ std::vector<std::string> systemReadablePaths() {
           "/proc/self"};
 }
 
-namespace {
-
-// Whether any user may reach `path`: every folder on the way searchable by others (the last one
-// readable too). A path that does not exist is no obstacle (the policy skips it).
 bool othersCanReach(const std::string& path) {
   struct stat info {};
   if (::stat(path.c_str(), &info) != 0) return true;
@@ -280,16 +357,15 @@ bool othersCanReach(const std::string& path) {
   return true;
 }
 
-}  // namespace
+std::string sandboxTemporaryRoot() {
+  std::error_code error;
+  const std::string system = std::filesystem::temp_directory_path(error).string();
+  return !error && othersCanReach(system) ? system : "/tmp";
+}
 
-SandboxUser sandboxUser(const SandboxPolicy& policy) {
+SandboxUser sandboxUser() {
   SandboxUser user;
   if (::geteuid() != 0) return user;
-  for (const std::string& path : policy.readable)
-    if (!othersCanReach(path)) {
-      user.staysRootFor = path;
-      return user;
-    }
   user.changes = true;
   const passwd* nobody = ::getpwnam("nobody");
   user.uid = nobody ? nobody->pw_uid : 65534;
@@ -298,7 +374,7 @@ SandboxUser sandboxUser(const SandboxPolicy& policy) {
 }
 
 void shareWithSandboxUser(const std::string& folder, SandboxMode mode) {
-  const SandboxUser user = sandboxUser({});
+  const SandboxUser user = sandboxUser();
   if (mode == SandboxMode::Off || !user.changes) return;
   if (::chown(folder.c_str(), user.uid, user.gid) != 0)
     throw PathwayError(folder +
@@ -338,18 +414,23 @@ SandboxState probeSandbox(const SandboxPolicy& policy, SandboxMode mode) {
     state.inForce.push_back("signals: " + landlockName + " scopes them (and abstract sockets)");
   const std::string limits = limitsText(policy);
   state.inForce.push_back("no new privileges" + (limits.empty() ? "" : "; limits: " + limits));
-  const SandboxUser user = sandboxUser(policy);
-  if (user.changes)
-    state.inForce.push_back("user: runs as uid " + std::to_string(user.uid) +
-                            " (nobody), not root");
-  if (!user.staysRootFor.empty()) {
-    if (mode == SandboxMode::Require)
-      throw PathwayError("--sandbox require runs student code as nobody, who cannot read " +
-                         user.staysRootFor + ": make it readable to all (chmod -R a+rX on it and " +
-                         "the folders above it), or grade with --sandbox auto");
-    state.inForce.push_back("user: stays root, since nobody cannot read " + user.staysRootFor +
-                            " (files, network and processes are held all the same)");
-  }
+  if (seccomp)
+    state.inForce.push_back(
+        startsPrograms
+            ? "other processes: no System V IPC or message queue; no limit, priority or "
+              "scheduling change but its own"
+            : "other processes: no System V IPC or message queue; no signal, limit, priority or "
+              "scheduling change but its own; not dumpable");
+  else
+    state.missing.push_back("other processes: no seccomp in this kernel");
+  const SandboxUser user = sandboxUser();
+  if (user.changes && !uidMapped(user.uid) && mode == SandboxMode::Require)
+    throw PathwayError("--sandbox require runs student code as uid " + std::to_string(user.uid) +
+                       ", which this system does not have (a user namespace that maps root "
+                       "alone); grade where that user can be had, or with --sandbox auto");
+  state.inForce.push_back(user.changes ? "user: uid " + std::to_string(user.uid) + " (not root)"
+                                       : "user: uid " + std::to_string(::getuid()) +
+                                             " (the grader's own, not root)");
   const bool required = abi >= 1 && (abi >= 4 || seccomp) && (startsPrograms || seccomp);
   if (mode == SandboxMode::Require && !required) {
     std::string what;
@@ -361,8 +442,8 @@ SandboxState probeSandbox(const SandboxPolicy& policy, SandboxMode mode) {
 }
 
 SandboxState enterSandbox(const SandboxPolicy& policy, SandboxMode mode) {
-  const SandboxState state = probeSandbox(policy, mode);
-  if (mode == SandboxMode::Off) return state;
+  const SandboxState probed = probeSandbox(policy, mode);
+  if (mode == SandboxMode::Off) return probed;
 #ifndef __SANITIZE_ADDRESS__
   setLimit(RLIMIT_AS, policy.addressSpaceBytes);
 #endif
@@ -371,11 +452,44 @@ SandboxState enterSandbox(const SandboxPolicy& policy, SandboxMode mode) {
   setLimit(RLIMIT_FSIZE, policy.fileBytes);
   const rlimit noCores{0, 0};
   ::setrlimit(RLIMIT_CORE, &noCores);
-  const SandboxUser user = sandboxUser(policy);
-  if (user.changes &&
-      (::setgroups(0, nullptr) != 0 || ::setresgid(user.gid, user.gid, user.gid) != 0 ||
-       ::setresuid(user.uid, user.uid, user.uid) != 0))
-    throw PathwayError(std::string("sandbox: could not become nobody: ") + std::strerror(errno));
+  SandboxState state = probed;
+  const SandboxUser user = sandboxUser();
+  // Root can have an IPC namespace of its own as well, for nothing: System V objects and POSIX
+  // message queues made in it (seccomp refuses them anyway) would end with the process.
+  if (user.changes && ::unshare(CLONE_NEWIPC) == 0)
+    for (std::string& line : state.inForce)
+      if (line.rfind("other processes: ", 0) == 0) line += "; an IPC namespace of its own";
+  if (user.changes) {
+    int deathSignal = 0;  // a change of user clears it: it is set again after
+    ::prctl(PR_GET_PDEATHSIG, &deathSignal, 0, 0, 0);
+    const bool changed = ::setgroups(0, nullptr) == 0 &&
+                         ::setresgid(user.gid, user.gid, user.gid) == 0 &&
+                         ::setresuid(user.uid, user.uid, user.uid) == 0;
+    if (!changed) {
+      const std::string why = std::strerror(errno);
+      if (mode == SandboxMode::Require)
+        throw PathwayError("--sandbox require runs student code as uid " +
+                           std::to_string(user.uid) + ", which this system refused (" + why +
+                           "); grade where that user can be had, or with --sandbox auto");
+      // Root without capabilities still owns root's files: only Landlock keeps it from them.
+      if (landlock::abi() < 1)
+        throw PathwayError("sandbox: could not become uid " + std::to_string(user.uid) + " (" +
+                           why + "), and without Landlock root's files would be open to " +
+                           "student code: grade as another user, or on a newer kernel");
+      dropEveryCapability();
+      state.missing.push_back("user: could not become uid " + std::to_string(user.uid) + " (" +
+                              why + "): stays root, with every capability dropped");
+    }
+    if (deathSignal != 0) {
+      ::prctl(PR_SET_PDEATHSIG, deathSignal, 0, 0, 0);
+      if (::getppid() == 1) std::_Exit(1);  // the parent is gone already
+    }
+  }
+  // What is in force, read back from the process itself: its real user.
+  for (std::string& line : state.inForce)
+    if (line.rfind("user: ", 0) == 0) line = actualUser();
+  // Not dumpable: another process of the same user can neither trace it nor read its /proc.
+  ::prctl(PR_SET_DUMPABLE, 0, 0, 0, 0);
   if (::prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0)
     throw PathwayError(std::string("sandbox: no_new_privs refused: ") + std::strerror(errno));
   const int abi = landlock::abi();

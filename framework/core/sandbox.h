@@ -11,7 +11,13 @@
 //     no abstract UNIX socket; no ptrace, no new privileges. A forbidden system call kills the
 //     process on the spot (SIGSYS): the attempt fails the case, it is not quietly refused;
 //   - limits: address space, CPU time, open files, file size (setrlimit);
-//   - user: a process running as root becomes the unprivileged user `nobody` first.
+//   - other processes: no System V IPC or POSIX message queue (nothing that outlives a case or
+//     crosses to another child; under root, an IPC namespace of its own besides), no signal, limit,
+//     priority or scheduling change of any process but itself, and it is not dumpable (another
+//     process of its user cannot read its memory);
+//   - user: a process running as root becomes the unprivileged user `nobody` first (where that
+//     cannot be done, auto keeps root but drops every capability and says so; require refuses).
+// What a process reports (SandboxState) is read back after it shut itself in: its real user.
 // `--sandbox require|auto|off` picks how strict: require refuses to run untrusted code where the
 // kernel cannot give files, network and processes; auto takes what the kernel gives; off is for
 // debugging.
@@ -32,7 +38,11 @@ struct SandboxPolicy {
   std::vector<std::string> readable;  // files, or folders with all below them (missing ones skip)
   std::vector<std::string> writable;  // folders to create, write and remove files in
   bool startsPrograms = false;        // a compiler does (cc1plus, as, ld); a render does not
-  uint64_t addressSpaceBytes = 0;     // 0: no limit (likewise below)
+  // Whether it may remove files in its writable folders (a compiler's temporary files). A render
+  // may not: a file it wrote stays where the grader counts it (a file deleted while held open
+  // would hide its bytes from the grader's quota).
+  bool removesFiles = true;
+  uint64_t addressSpaceBytes = 0;  // 0: no limit (likewise below)
   uint64_t cpuSeconds = 0;
   uint64_t openFiles = 0;
   uint64_t fileBytes = 0;
@@ -54,8 +64,8 @@ std::vector<std::string> systemReadablePaths();
 // What `enterSandbox` would put in force in this process, without changing anything. With
 // SandboxMode::Require it throws PathwayError naming the missing kernel feature when files,
 // network or (where the policy starts no programs) processes cannot be shut in, or when a root
-// grader's sandbox user could not read what the policy lists. (The policy's limits, whether it
-// starts programs and, under root, its readable paths matter here.)
+// grader's sandbox user does not exist here (a user namespace that maps root alone). (The
+// policy's limits and whether it starts programs matter here.)
 SandboxState probeSandbox(const SandboxPolicy& policy, SandboxMode mode);
 
 // Shuts this process in for good, and everything it starts afterwards. Call it before any thread
@@ -63,19 +73,23 @@ SandboxState probeSandbox(const SandboxPolicy& policy, SandboxMode mode);
 // Require, before anything changes, when one is missing).
 SandboxState enterSandbox(const SandboxPolicy& policy, SandboxMode mode);
 
-// The user a root process becomes (`nobody`), its uid and gid; other processes keep their own.
-// In auto mode root stays root where nobody could not read a path of the policy.
+// The user a root process becomes (`nobody`, or uid 65534 where the system has no such user);
+// other processes keep their own. The grader stages what a sandboxed process must read into
+// folders it shares with this user (sandboxTemporaryFolder), so nobody can always work.
 struct SandboxUser {
   bool changes = false;  // this process runs as root and becomes nobody
   unsigned uid = 0, gid = 0;
-  // Root that stays root (auto mode only): a path of the policy that nobody cannot reach, e.g. a
-  // tree in /root. Files, network and processes are still held by Landlock and seccomp.
-  std::string staysRootFor;
 };
-SandboxUser sandboxUser(const SandboxPolicy& policy);
+SandboxUser sandboxUser();
 // Hands `folder` to the sandbox user, so that a sandboxed process of a root grader can write in
 // it; does nothing when the mode is Off or the grader is not root. Throws PathwayError naming the
 // folder when it cannot.
 void shareWithSandboxUser(const std::string& folder, SandboxMode mode);
+// Whether every user may reach `path`: each folder on the way searchable by others, the path
+// itself readable (and searchable, if a folder). A missing path is reachable (nothing to read).
+bool othersCanReach(const std::string& path);
+// Where a grader makes the folders its sandboxed processes read and write: the system's temporary
+// folder where others can reach it, else /tmp.
+std::string sandboxTemporaryRoot();
 
 }  // namespace pathway

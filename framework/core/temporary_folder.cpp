@@ -10,8 +10,10 @@
 
 namespace pathway {
 
-TemporaryFolder::TemporaryFolder(const std::string& prefix) {
-  std::string pattern = (std::filesystem::temp_directory_path() / (prefix + "-XXXXXX")).string();
+TemporaryFolder::TemporaryFolder(const std::string& prefix, const std::string& parent) {
+  const std::filesystem::path folder =
+      parent.empty() ? std::filesystem::temp_directory_path() : std::filesystem::path(parent);
+  std::string pattern = (folder / (prefix + "-XXXXXX")).string();
   if (!::mkdtemp(pattern.data()))
     throw PathwayError("cannot make a temporary folder: " + std::string(std::strerror(errno)));
   path_ = pattern;

@@ -5,11 +5,11 @@
 
 namespace pathway {
 
-// A new, private folder under the system's temporary folder (mkdtemp), removed with everything in
-// it when the object goes, also when an exception passes.
+// A new, private folder under the system's temporary folder, or under `parent` (mkdtemp), removed
+// with everything in it when the object goes, also when an exception passes.
 class TemporaryFolder {
  public:
-  explicit TemporaryFolder(const std::string& prefix);
+  explicit TemporaryFolder(const std::string& prefix, const std::string& parent = "");
   ~TemporaryFolder();
   TemporaryFolder(const TemporaryFolder&) = delete;
   TemporaryFolder& operator=(const TemporaryFolder&) = delete;

@@ -16,7 +16,9 @@
 #include "grade/jackknife_render.h"
 #include "io/image_io.h"
 #include "scene/gltf_loader.h"
+#include "stage_loading/reference_library.h"
 #include "stage_loading/stage_library.h"
+#include "stages/stage_catalog.h"
 
 namespace pathway {
 namespace {
@@ -32,6 +34,9 @@ constexpr const char* kGradeReferenceFlag = "--grade-reference";  // a toggle (p
 constexpr const char* kSingleRayFlag = "--single-ray";            // a toggle (present or not)
 constexpr const char* kStagesLibraryFlag = "--stages-library";    // per library, in order
 constexpr const char* kSandboxFlag = "--sandbox";                 // once
+constexpr const char* kReferenceStageFlag = "--reference-stage";  // per stage, in order
+constexpr const char* kReferenceFolderFlag = "--reference-folder";  // once, with the stages
+constexpr const char* kReportFlag = "--report-sandbox";             // a toggle (present or not)
 
 // The child's limits: a render and its log need far less than 64 MiB of file, and the largest
 // grading case far less than 4 GiB of address space (thread stacks and malloc's arenas
@@ -73,6 +78,11 @@ std::vector<std::string> CaseRenderJob::toArguments() const {
   if (singleRay) arguments.push_back(kSingleRayFlag);
   for (const std::string& library : stageLibraries)
     arguments.insert(arguments.end(), {kStagesLibraryFlag, library});
+  for (int stage : referenceStages)
+    arguments.insert(arguments.end(), {kReferenceStageFlag, std::to_string(stage)});
+  if (!referenceFolder.empty())
+    arguments.insert(arguments.end(), {kReferenceFolderFlag, referenceFolder});
+  if (reportsSandbox) arguments.push_back(kReportFlag);
   arguments.insert(arguments.end(), {kSandboxFlag, sandboxModeName(sandbox)});
   return arguments;
 }
@@ -128,6 +138,19 @@ CaseRenderJob CaseRenderJob::fromArguments(const std::vector<std::string>& argum
       job.singleRay = true;
     } else if (flag == kStagesLibraryFlag) {
       job.stageLibraries.push_back(value());
+    } else if (flag == kReferenceStageFlag) {
+      const std::string& text = value();
+      int stage = 0;
+      if (!readNumber(text, stage) || stage < 1 || stage > kStageCount)
+        throw refusal(flag + " '" + text + "' is not a stage (1 to " + std::to_string(kStageCount) +
+                      ")");
+      job.referenceStages.push_back(stage);
+    } else if (flag == kReferenceFolderFlag) {
+      once();
+      job.referenceFolder = value();
+    } else if (flag == kReportFlag) {
+      once();
+      job.reportsSandbox = true;
     } else if (flag == kSandboxFlag) {
       once();
       try {
@@ -142,6 +165,8 @@ CaseRenderJob CaseRenderJob::fromArguments(const std::vector<std::string>& argum
   for (const char* required : {kOutputFlag, kScenesFlag, kSeedFlag, kSandboxFlag})
     if (!given.count(required)) throw refusal(std::string("no ") + required + " given");
   if (job.cases.empty()) throw refusal(std::string("no ") + kCaseFlag + " given");
+  if (!job.referenceStages.empty() && job.referenceFolder.empty())
+    throw refusal(std::string(kReferenceStageFlag) + " needs a " + kReferenceFolderFlag);
   for (const Case& c : job.cases)
     if (c.timeLimit <= 0.0)
       throw refusal(std::string(kCaseFlag) + " " + c.gradingCase->id() + " has no " +
@@ -161,13 +186,23 @@ bool operator==(const CaseRenderJob& a, const CaseRenderJob& b) {
   return a.cases == b.cases && a.output == b.output && a.scenes == b.scenes && a.seed == b.seed &&
          a.together == b.together && a.gradeReference == b.gradeReference &&
          a.singleRay == b.singleRay && a.stageLibraries == b.stageLibraries &&
-         a.sandbox == b.sandbox;
+         a.referenceStages == b.referenceStages && a.referenceFolder == b.referenceFolder &&
+         a.reportsSandbox == b.reportsSandbox && a.sandbox == b.sandbox;
+}
+
+std::vector<int> CaseRenderJob::referenceStagesFor(int stage, bool gradeReference, bool together) {
+  std::vector<int> stages;
+  if (together && !gradeReference) return stages;
+  for (int earlier = 1; earlier < stage + (gradeReference ? 1 : 0); ++earlier)
+    stages.push_back(earlier);
+  return stages;
 }
 
 SandboxPolicy CaseRenderJob::sandboxPolicy() const {
   SandboxPolicy policy;
   policy.readable = stageLibraries;
   policy.writable = {output};
+  policy.removesFiles = false;  // what it wrote stays there for the grader's quota to count
   double seconds = kChildCpuGraceSeconds;
   for (const Case& c : cases) seconds += c.timeLimit;
   policy.cpuSeconds =
@@ -186,11 +221,24 @@ void runCaseRenderJob(const CaseRenderJob& job) {
   for (const CaseRenderJob::Case& c : job.cases)
     if (!scenes.count(c.gradingCase->scene))
       scenes.emplace(c.gradingCase->scene, loadScene(job.scenes + "/" + c.gradingCase->scene));
+  // The reference stages the job may hold: trusted code, loaded (and sealed, checked) while this
+  // process is still the grader's own.
+  for (int stage : job.referenceStages)
+    loadReferenceStageLibrary(job.referenceFolder + "/stage" + std::to_string(stage) + ".so",
+                              stage);
   // Shut in before the first line of student code runs: loading a library runs its static
   // initializers. No thread has started yet (the renderer's start with the first case).
   const SandboxState sandbox = enterSandbox(job.sandboxPolicy(), job.sandbox);
-  std::printf("pathway: %s\n", sandbox.summary().c_str());
+  const std::string said = "pathway: " + sandbox.summary() + "\n";
+  std::fputs(said.c_str(), stdout);
   std::fflush(stdout);
+  if (job.reportsSandbox) {
+    // The parent's record of what held, written before student code could write anything.
+    if (::write(kChildReportDescriptor, said.data(), said.size()) < 0) {
+      // the parent is gone: nothing to tell
+    }
+    ::close(kChildReportDescriptor);
+  }
   std::vector<int> registeredStages;
   for (const std::string& library : job.stageLibraries)
     for (int stage : loadStageLibrary(library)) registeredStages.push_back(stage);

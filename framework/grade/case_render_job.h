@@ -1,10 +1,15 @@
 // The grader's child process as one type. The grader (stage_grading.cpp) renders a stage's cases
-// in a child process of this program, so that a stage that crashes or hangs fails its own case and
-// nothing else. What a child renders is a CaseRenderJob: grading cases, each within its time limit,
-// into a folder, with a seed and a choice of stages. The job travels as the child's command line,
-// `pathway render-grading-cases ...` (a hidden subcommand), written by toArguments() in the parent
-// and read back by fromArguments() in the child. Both directions, and the child's work, are in
-// case_render_job.cpp and nowhere else, so the two ends cannot disagree about a flag.
+// in a child process, so that a stage that crashes or hangs fails its own case and nothing else.
+// The child is its own program, pathway-child (app/child_main.cpp): the framework without any
+// reference stage built in. It loads the reference stages the job names (for a student's stage N
+// the reference's stages below N at most, stage_loading/reference_library.h), shuts itself in,
+// and only then loads the student's library: the process that runs student code holds nothing of
+// the reference of the stage it grades. What a child renders is a CaseRenderJob: grading cases of
+// one stage, each within its time limit, into a folder, with a seed and a choice of stages. The
+// job travels as the child's command line, `pathway-child render-grading-cases ...`, written by
+// toArguments() in the parent and read back by fromArguments() in the child. Both directions, and
+// the child's work, are in case_render_job.cpp and nowhere else, so the two ends cannot disagree
+// about a flag.
 #pragma once
 
 #include <cstdint>
@@ -17,7 +22,7 @@
 namespace pathway {
 
 struct CaseRenderJob {
-  // The hidden subcommand of `pathway` that runs a job: the first word of toArguments().
+  // The command of `pathway-child` that runs a job: the first word of toArguments().
   static constexpr const char* kCommand = "render-grading-cases";
 
   struct Case {
@@ -34,8 +39,19 @@ struct CaseRenderJob {
   // Stage libraries (stage_loading/stage_library.h) loaded before rendering, in this order. The
   // parent gives absolute paths: the child may resolve a relative one differently.
   std::vector<std::string> stageLibraries;
+  // The reference stages the child loads (sealed libraries in `referenceFolder`), before it shuts
+  // itself in: referenceStagesFor() says which.
+  std::vector<int> referenceStages;
+  std::string referenceFolder;
+  // The child writes what its sandbox holds to kChildReportDescriptor (core/child_process.h)
+  // before it loads any student code, and closes it.
+  bool reportsSandbox = false;
   // How the child shuts itself in before it loads them (core/sandbox.h).
   SandboxMode sandbox = SandboxMode::Auto;
+
+  // The reference stages a job of `stage` may hold: stages 1..stage when it grades the reference
+  // itself, 1..stage-1 for a student's stage on the reference's earlier stages, none together.
+  static std::vector<int> referenceStagesFor(int stage, bool gradeReference, bool together);
 
   // What the child may touch once it is shut in: read its libraries, write in `output`; within
   // limits on memory, CPU time (the cases' limits on every core), open files and file size.
@@ -56,8 +72,9 @@ struct CaseRenderJob {
 bool operator==(const CaseRenderJob::Case& a, const CaseRenderJob::Case& b);
 bool operator==(const CaseRenderJob& a, const CaseRenderJob& b);
 
-// The child's part: reads the cases' scenes, shuts itself in (job.sandboxPolicy(), job.sandbox)
-// and says so on its first line of output, loads the stage libraries, and renders the job's cases
+// The child's part: reads the cases' scenes, loads the job's reference stages, shuts itself in
+// (job.sandboxPolicy(), job.sandbox) and says so on its first line of output (and on its report
+// descriptor), loads the stage libraries, and renders the job's cases
 // in order, each into job.imagePath(case) and each within its own time limit (past it, SIGALRM
 // ends the process: the parent then knows which case hung from the images that exist). Reports
 // the pixels in progress when a signal ends it (engine/pixel_in_progress.h). Throws PathwayError

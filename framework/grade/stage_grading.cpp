@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <regex>
 #include <sstream>
 
 #include "core/child_process.h"
@@ -18,6 +19,7 @@
 #include "grade/case_render_job.h"
 #include "grade/reference_comparison.h"
 #include "render/parameters.h"
+#include "stage_loading/reference_library.h"
 #include "stages/stage_catalog.h"
 
 namespace pathway {
@@ -73,52 +75,93 @@ std::string stopMessage(const ChildOutcome& child, const GradingCase& gradingCas
 // The parent's own limit on a child, on top of its cases' limits: the child's alarms end it
 // first; this only catches a stage that blocks SIGALRM.
 constexpr double kChildGraceSeconds = 10.0;
+// What one child may write in its folder, all files together: its cases' images take a few MiB
+// each. Past it the child is stopped (its case fails, saying so), so no stage can fill the disk.
+constexpr uint64_t kChildFolderQuotaBytes = 256ull << 20;
+// The most channels a case's image has (colour, variance, weight, its batches' jackknife layers),
+// with room to spare: an image that declares more is not read.
+constexpr size_t kCaseImageChannels = 256;
 
-// Renders `cases` (each within its limit) with `seed` in as few child processes as crashes and
-// hangs allow: one child renders them all in order; when it stops early, the case it was on fails
-// and the cases after it go to a new child.
+// Renders `cases` (each within its limit, all of one stage) with `seed` in as few child processes
+// as crashes and hangs allow: one child renders them all in order; when it stops early, the case it
+// was on fails and the cases after it go to a new child. Each child gets a folder of its own under
+// `workFolder`, removed once its images are read; `sandboxSeen` collects what each child said its
+// sandbox held.
 std::vector<RenderOutcome> renderInChildren(const std::vector<CaseRenderJob::Case>& cases,
                                             const GradingRun& run, uint64_t seed,
-                                            const std::string& workFolder) {
+                                            const std::string& workFolder,
+                                            std::vector<std::string>* sandboxSeen = nullptr) {
   std::vector<RenderOutcome> outcomes(cases.size());
+  if (cases.empty()) return outcomes;
   CaseRenderJob job;
-  job.output = workFolder;
   job.scenes = run.scenes;
   job.seed = seed;
   job.together = run.together;
   job.gradeReference = run.gradeReference;
   job.singleRay = run.tracing == ReferenceTracing::SingleRay;
   job.sandbox = run.sandbox;
+  job.referenceStages = CaseRenderJob::referenceStagesFor(cases.front().gradingCase->stage,
+                                                          run.gradeReference, run.together);
+  if (!job.referenceStages.empty()) job.referenceFolder = referenceLibraryFolder();
+  job.reportsSandbox = true;
   for (const std::string& library : run.stageLibraries)
     job.stageLibraries.push_back(fs::absolute(library).string());
+  ChildOptions options;
+  options.reportChannel = true;
+  if (run.sandbox == SandboxMode::Off) {
+    options.keepDescriptors = true;  // unconfined: the grader's environment and files too
+  } else {
+    options.environment = untrustedChildEnvironment();
+    options.folderQuotaBytes = kChildFolderQuotaBytes;
+  }
   for (size_t next = 0; next < cases.size();) {
     job.cases.assign(cases.begin() + next, cases.end());
     double total = kChildGraceSeconds;
     for (const CaseRenderJob::Case& c : job.cases) total += c.timeLimit;
-    const std::string log =
-        workFolder + "/" + cases[next].gradingCase->id() + "-" + std::to_string(seed) + ".log";
-    std::vector<std::string> command = {currentExecutable()};
+    const std::string name = cases[next].gradingCase->id() + "-" + std::to_string(seed);
+    const std::string log = workFolder + "/" + name + ".log";
+    job.output = workFolder + "/" + name;
+    fs::remove_all(job.output);
+    fs::create_directory(job.output);
+    // A child of a root grader runs as nobody: the folder it writes its renders in is its own.
+    shareWithSandboxUser(job.output, run.sandbox);
+    options.watchedFolder = job.output;
+    std::vector<std::string> command = {PATHWAY_CHILD_PROGRAM};
     for (const std::string& argument : job.toArguments()) command.push_back(argument);
-    ChildOutcome child = runChild(command, total, log);
+    ChildOutcome child = runChild(command, total, log, options);
+    if (sandboxSeen && !child.report.empty()) sandboxSeen->push_back(child.report);
     // Images are written whole or not at all (image_io.h): each one there is a finished case.
     const size_t first = next;
     for (; next < cases.size(); ++next) {
-      const std::string image = job.imagePath(*cases[next].gradingCase);
-      if (!fs::exists(image)) break;
+      const GradingCase& gradingCase = *cases[next].gradingCase;
+      const std::string image = job.imagePath(gradingCase);
+      std::error_code missing;
+      const fs::file_status status = fs::symlink_status(image, missing);
+      if (missing || !fs::exists(status)) break;
       try {
-        outcomes[next].image = readImageFile(image);
+        // The child has ended (and all it started): nothing changes the folder any more.
+        if (!fs::is_regular_file(status))
+          throw PathwayError(image + ": not a regular file (a link, a pipe?): not read");
+        // Written by student code: read only if it is the case's size.
+        outcomes[next].image = readImageFile(
+            image, RasterLimits{gradingCase.width, gradingCase.height, kCaseImageChannels});
       } catch (const std::exception& error) {
         outcomes[next].problem = error.what();
       }
     }
-    // A stage starts no process; one that did (where the sandbox could not refuse it) fails
-    // every case its child rendered, whatever the images.
-    if (child.leftBehind > 0)
+    std::error_code ignored;
+    fs::remove_all(job.output, ignored);
+    // A stage starts no process and writes nothing but its images; one that did (where the
+    // sandbox could not refuse it) fails every case its child rendered, whatever the images.
+    if (child.leftBehind > 0 || child.overQuota)
       for (size_t i = first; i < next; ++i) {
         outcomes[i].image.reset();
-        outcomes[i].problem = "your stage started " + std::to_string(child.leftBehind) +
-                              " process(es) that outlived its render (the grader ended them); "
-                              "a stage starts none";
+        outcomes[i].problem =
+            child.overQuota
+                ? "your stage " + child.describe(0.0) + "; a stage writes nothing but its image"
+                : "your stage started " + std::to_string(child.leftBehind) +
+                      " process(es) that outlived its render (the grader ended them); "
+                      "a stage starts none";
       }
     if (next == cases.size()) break;
     // The child stopped on cases[next].
@@ -244,9 +287,30 @@ GradeSummary gradeStages(const GradingRun& run, const ComparisonSettings& settin
   CaseRenderJob probe;
   for (const GradingCase* c : run.cases) probe.cases.push_back({c, run.timeLimit});
   summary.sandbox = probeSandbox(probe.sandboxPolicy(), run.sandbox).summary();
-  const TemporaryFolder work("pathway-grade");  // the renders and their logs; removed at the end
-  // A child of a root grader runs as nobody: the folder it writes its renders in is its own.
-  shareWithSandboxUser(work.path(), run.sandbox);
+  // The renders and their logs, removed at the end: somewhere a child of a root grader (nobody)
+  // can reach its own folder in, which others may pass through but not list.
+  const TemporaryFolder work("pathway-grade", sandboxTemporaryRoot());
+  fs::permissions(work.path(),
+                  fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
+  std::vector<std::string> sandboxSeen;
+  // The stage libraries, copied where the sandbox's user can read them (wherever they were
+  // built: a tree in /root, an output under a 0700 folder).
+  GradingRun staged = run;
+  const fs::path libraries = fs::path(work.path()) / "libraries";
+  fs::create_directory(libraries);
+  fs::permissions(libraries, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
+  for (size_t i = 0; i < staged.stageLibraries.size(); ++i) {
+    const fs::path copy = libraries / (std::to_string(i) + "-" +
+                                       fs::path(staged.stageLibraries[i]).filename().string());
+    std::error_code error;  // one that cannot be copied stays where it is: the child says why
+    // A library in a folder its compiler could write: never followed through a link.
+    if (!fs::is_regular_file(fs::symlink_status(staged.stageLibraries[i], error)) ||
+        !fs::copy_file(staged.stageLibraries[i], copy, error) || error)
+      continue;
+    fs::permissions(copy, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
+                              fs::perms::others_read);
+    staged.stageLibraries[i] = copy.string();
+  }
   std::map<int, int> casesPerStage, done;
   for (const GradingCase* c : run.cases) ++casesPerStage[c->stage];
   // A stage's cases (consecutive in the run) render in one child, unless one crashes or hangs.
@@ -271,11 +335,11 @@ GradeSummary gradeStages(const GradingRun& run, const ComparisonSettings& settin
       std::fprintf(stderr, "grading stage %d: %zu cases ...\n", run.cases[first]->stage,
                    end - first);
     const std::vector<RenderOutcome> outcomes =
-        renderInChildren(toRender, run, run.seed, work.path());
+        renderInChildren(toRender, staged, run.seed, work.path(), &sandboxSeen);
     for (size_t i = first, rendered = 0; i < end; ++i) {
       CaseResult& result = results[i - first];
       if (const auto& reference = references[i - first]) {
-        gradeCase(result, *run.cases[i], run, *reference, toRender[rendered].timeLimit,
+        gradeCase(result, *run.cases[i], staged, *reference, toRender[rendered].timeLimit,
                   outcomes[rendered], work.path(), settings);
         ++rendered;
       }
@@ -285,6 +349,21 @@ GradeSummary gradeStages(const GradingRun& run, const ComparisonSettings& settin
       summary.cases.push_back(std::move(result));
     }
     first = end;
+  }
+  // What held, as the children said it from inside before any student code ran (the probe above
+  // is what this machine promised).
+  std::vector<std::string> held;
+  for (std::string line : sandboxSeen) {
+    if (line.rfind("pathway: ", 0) == 0) line.erase(0, 9);
+    // Each child's CPU limit is its own cases' time limits: one line serves them all.
+    line = std::regex_replace(line, std::regex("CPU [0-9]+ s"), "CPU time of its cases' limits");
+    while (!line.empty() && line.back() == '\n') line.pop_back();
+    if (std::find(held.begin(), held.end(), line) == held.end()) held.push_back(line);
+  }
+  if (!held.empty()) {
+    summary.sandbox.clear();
+    for (const std::string& line : held)
+      summary.sandbox += (summary.sandbox.empty() ? "" : "\n") + line;
   }
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;

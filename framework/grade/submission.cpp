@@ -1,8 +1,14 @@
 #include "grade/submission.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
+#include <fstream>
 
 #include "core/child_process.h"
 #include "core/error.h"
@@ -84,50 +90,147 @@ SandboxedCommand sandboxedCompile(const std::vector<std::string>& compile,
   return sandboxed;
 }
 
+// What a stage file may bring along from its folder and the folders below it: its own headers
+// and sources, no larger than any such file is, and not too many.
+bool isStagedAlong(const fs::path& path) {
+  static const std::vector<std::string> kinds = {".h",   ".hpp", ".hh", ".hxx", ".inl",
+                                                 ".ipp", ".cpp", ".cc", ".cxx", ".c"};
+  return std::find(kinds.begin(), kinds.end(), path.extension().string()) != kinds.end();
+}
+constexpr uintmax_t kStagedFileBytes = 1u << 20;
+constexpr size_t kStagedFiles = 200;
+
+// Copies the regular file `from` to `to`, readable by all, if it has at most `most` bytes; false
+// when it is no such file. Read through one descriptor opened without following a link: a
+// submission's symbolic link to a file of the grading machine is never followed, nor swapped in
+// between a check and the copy.
+bool copyRegularFile(const fs::path& from, const fs::path& to, uintmax_t most = kStagedFileBytes) {
+  const int in = ::open(from.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
+  if (in < 0) return false;
+  struct stat info {};
+  const bool regular = ::fstat(in, &info) == 0 && S_ISREG(info.st_mode) &&
+                       static_cast<uintmax_t>(info.st_size) <= most;
+  std::string bytes;
+  char buffer[1 << 16];
+  for (ssize_t n; regular && (n = ::read(in, buffer, sizeof buffer)) > 0;) bytes.append(buffer, n);
+  ::close(in);
+  if (!regular) return false;
+  std::error_code error;
+  fs::create_directories(to.parent_path(), error);
+  std::ofstream out(to, std::ios::binary | std::ios::trunc);
+  if (!(out << bytes) || !out.flush()) return false;
+  fs::permissions(to,
+                  fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
+                      fs::perms::others_read,
+                  error);
+  return true;
+}
+
+// A folder's headers (every file named *.h below it), copied to `to`.
+void copyHeaders(const fs::path& from, const fs::path& to) {
+  for (const auto& entry : fs::recursive_directory_iterator(from))
+    if (entry.path().extension() == ".h")
+      copyRegularFile(entry.path(), to / fs::relative(entry.path(), from));
+}
+
+// Every folder below `root` searchable and readable by all (the files are already readable).
+void openToAll(const fs::path& root) {
+  const fs::perms open = fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                         fs::perms::others_read | fs::perms::others_exec;
+  fs::permissions(root, open);
+  for (const auto& entry : fs::recursive_directory_iterator(root))
+    if (entry.is_directory()) fs::permissions(entry.path(), open);
+}
+
 }  // namespace
 
 SubmissionBuild buildSubmission(const Submission& submission, const std::string& buildFolder,
                                 double timeLimit, SandboxMode sandbox) {
   SubmissionBuild build;
   fs::create_directories(buildFolder);
-  const std::string folder = fs::absolute(buildFolder).lexically_normal().string();
+  // The staging folder: the compiler's inputs, copied where the sandbox's user can read them,
+  // and the folder it builds in, its own.
+  build.staging = std::make_shared<TemporaryFolder>("pathway-build", sandboxTemporaryRoot());
+  const fs::path stage = build.staging->path();
+  const fs::path sources = stage / "submission";
+  const fs::path built = stage / "build";
+  std::vector<std::string> compileCommand = stageLibraryCompileCommand();
+  std::vector<std::string> stagedPrefixes = {sources.string() + "/", built.string() + "/"};
+  for (std::string& word : compileCommand)
+    if (word.rfind("-I", 0) == 0 && word.size() > 2 && word.rfind("-I/usr/", 0) != 0) {
+      // An include folder of the framework's ("framework"): its headers, under the same name
+      // (the system's, under /usr, every user reads as they are).
+      const fs::path from = word.substr(2);
+      const fs::path to = stage / from.filename();
+      copyHeaders(from, to);
+      word = "-I" + to.string();
+      stagedPrefixes.push_back(stage.string() + "/");
+    }
+  for (const auto& [stageNumber, file] : submission.files) {
+    const fs::path folder = fs::path(file).parent_path();
+    const fs::path to = sources / fs::relative(folder, submission.folder);
+    std::error_code error;
+    // The stage file whatever its size (the compiler's limits hold it); the headers and sources
+    // beside it and in folders below it (not through links) if small.
+    if (!copyRegularFile(file, to / fs::path(file).filename(), UINTMAX_MAX))
+      build.stages[stageNumber].problem =
+          fs::path(file).filename().string() +
+          " did not compile: it is no regular file (a symbolic link is not followed)";
+    size_t along = 0;
+    for (fs::recursive_directory_iterator it(folder, error), end; !error && it != end;
+         it.increment(error))
+      if (it->is_regular_file() && it->path() != fs::path(file) && isStagedAlong(it->path()) &&
+          ++along <= kStagedFiles)
+        copyRegularFile(it->path(), to / fs::relative(it->path(), folder));
+  }
+  fs::create_directories(sources);
+  openToAll(sources);
+  for (const auto& entry : fs::directory_iterator(stage))
+    if (entry.is_directory() && entry.path() != sources) openToAll(entry.path());
+  fs::create_directories(built);
+  // Others may pass through the staging folder, not list it; the build folder is the compiler's.
+  fs::permissions(stage, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
+  shareWithSandboxUser(built.string(), sandbox);
   // What every compile reads: the framework and the submission.
-  std::vector<std::string> probeCommand = stageLibraryCompileCommand();
-  probeCommand.push_back("-I" + submission.folder);
+  std::vector<std::string> probeCommand = compileCommand;
+  probeCommand.push_back("-I" + sources.string());
   build.sandbox =
       "compiler: " +
-      probeSandbox(sandboxedCompile(probeCommand, folder, timeLimit, sandbox).policy, sandbox)
+      probeSandbox(sandboxedCompile(probeCommand, built.string(), timeLimit, sandbox).policy,
+                   sandbox)
           .summary();
-  // A compiler of a root grader runs as nobody: the build folder is its own.
-  shareWithSandboxUser(folder, sandbox);
-  for (const auto& [stage, file] : submission.files) {
-    StageBuild& result = build.stages[stage];
-    const std::string name = "stage" + std::to_string(stage);
-    result.library = folder + "/" + name + ".so";
-    std::vector<std::string> compile = stageLibraryCompileCommand();
+  ChildOptions options;
+  if (sandbox == SandboxMode::Off)
+    options.keepDescriptors = true;  // unconfined: the grader's environment and files too
+  else
+    options.environment = untrustedChildEnvironment();
+  for (const auto& [stageNumber, file] : submission.files) {
+    StageBuild& result = build.stages[stageNumber];
+    if (!result.problem.empty()) continue;  // not staged
+    const std::string name = "stage" + std::to_string(stageNumber);
+    result.library = (built / (name + ".so")).string();
+    const fs::path staged = sources / fs::relative(file, submission.folder);
+    std::vector<std::string> compile = compileCommand;
     // A stage file may include a header of its own beside it.
-    compile.push_back("-I" + fs::path(file).parent_path().string());
-    compile.push_back(file);
+    compile.push_back("-I" + staged.parent_path().string());
+    // Its TODOs name the file where the student has it, not the staged copy.
+    compile.push_back("-fmacro-prefix-map=" + sources.string() + "=" + submission.folder);
+    compile.push_back(staged.string());
     compile.push_back("-o");
     compile.push_back(result.library);
-    std::error_code ignored;
-    fs::remove(result.library, ignored);
     std::vector<std::string> command = compile;
     if (sandbox != SandboxMode::Off) {
       command = {currentExecutable()};
       for (const std::string& word :
-           sandboxedCompile(compile, folder, timeLimit, sandbox).toArguments())
+           sandboxedCompile(compile, built.string(), timeLimit, sandbox).toArguments())
         command.push_back(word);
     }
     const ChildOutcome outcome =
-        runChild(command, timeLimit, buildFolder + "/" + name + "-build.log");
+        runChild(command, timeLimit, buildFolder + "/" + name + "-build.log", options);
     build.seconds += outcome.seconds;
     // Paths on the grading machine mean nothing to the student: the compiler's message names
     // files by their names in the submission and the framework.
-    result.log = withoutPrefixes(outcome.output,
-                                 {fs::absolute(submission.folder).lexically_normal().string() + "/",
-                                  submission.folder + "/", std::string(PATHWAY_SOURCE_DIR) + "/",
-                                  fs::absolute(buildFolder).lexically_normal().string() + "/"});
+    result.log = withoutPrefixes(outcome.output, stagedPrefixes);
     result.succeeded = outcome.succeeded() && fs::exists(result.library);
     if (!result.succeeded)
       result.problem = fs::path(file).filename().string() + " did not compile: the compiler " +

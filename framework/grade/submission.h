@@ -4,10 +4,12 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/sandbox.h"
+#include "core/temporary_folder.h"
 
 namespace pathway {
 
@@ -27,7 +29,7 @@ Submission findSubmission(const std::string& folder);
 // its own stage only.
 struct StageBuild {
   bool succeeded = false;
-  std::string library;  // `buildFolder`/stageN.so, when it built
+  std::string library;  // stageN.so in the build's staging folder, when it built
   std::string log;      // the compiler's output (the end of it)
   std::string problem;  // why it did not build, in one line
 };
@@ -36,12 +38,18 @@ struct SubmissionBuild {
   std::map<int, StageBuild> stages;  // for every stage file found
   double seconds = 0.0;
   std::string sandbox;  // how the compiler was shut in (SandboxState::summary)
+  // Where the compiler read and wrote: the libraries live here as long as the build does.
+  std::shared_ptr<const TemporaryFolder> staging;
 };
 
-// Compiles each of the submission's stage files into `buildFolder`/stageN.so, stopping the
-// compiler after `timeLimit` seconds per file. The compiler runs in the sandbox (`sandbox`): it
-// reads the system, the framework and the stage file's own folder, and writes the build folder.
-// Throws PathwayError when `sandbox` is Require and this machine cannot shut it in.
+// Compiles each of the submission's stage files into a library, stopping the compiler after
+// `timeLimit` seconds per file; its messages go to `buildFolder`/stageN-build.log. The compiler
+// runs in the sandbox (`sandbox`), as nobody under a root grader, so it works on copies the
+// grader stages where that user can read them, wherever the checkout, the class and the output
+// are (a clone in /root, an output under a 0700 folder): the framework's headers, and the
+// sources and headers beside each stage file (regular files only, no links). It reads those and
+// the system, and writes the staging folder's build/. Throws PathwayError when `sandbox` is
+// Require and this machine cannot shut it in.
 SubmissionBuild buildSubmission(const Submission& submission, const std::string& buildFolder,
                                 double timeLimit, SandboxMode sandbox);
 

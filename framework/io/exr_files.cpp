@@ -8,7 +8,9 @@
 #include <OpenEXR/ImfStringAttribute.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <exception>
+#include <filesystem>
 
 #include "core/error.h"
 
@@ -44,8 +46,20 @@ void writeExrRaster(const std::string& path, const RasterHeader& header, const f
   }
 }
 
-Raster readExrRaster(const std::string& path) {
+Raster readExrRaster(const std::string& path, const RasterLimits& limits) {
   try {
+    if (limits.width > 0 && limits.height > 0 && limits.maxChannels > 0) {
+      // Uncompressed float pixels, the header and the offset table: a file past that is no
+      // image of this size (and not read at all).
+      const uint64_t most = uint64_t(limits.width) * limits.height * limits.maxChannels * 4 +
+                            uint64_t(limits.height) * 16 + (1u << 20);
+      std::error_code error;
+      const uintmax_t size = std::filesystem::file_size(path, error);
+      if (!error && size > most)
+        throw PathwayError(path + ": cannot read image: " + std::to_string(size) +
+                           " bytes, more than a " + std::to_string(limits.width) + "x" +
+                           std::to_string(limits.height) + " image can take");
+    }
     Imf::InputFile file(path.c_str());
     const Imf::Header& exr = file.header();
     const Imath::Box2i window = exr.dataWindow();
@@ -55,6 +69,12 @@ Raster readExrRaster(const std::string& path) {
     header.height = window.max.y - window.min.y + 1;
     if (header.width <= 0 || header.height <= 0)
       throw PathwayError(path + ": cannot read image: empty data window");
+    if ((limits.width > 0 && header.width != limits.width) ||
+        (limits.height > 0 && header.height != limits.height))
+      throw PathwayError(path + ": cannot read image: it declares " + std::to_string(header.width) +
+                         "x" + std::to_string(header.height) + " pixels, not the " +
+                         std::to_string(limits.width) + "x" + std::to_string(limits.height) +
+                         " expected");
     std::vector<std::string> others;
     // Unsigned channels are a part's film sums (io/partial_film.h), not pixel values.
     for (auto channel = exr.channels().begin(); channel != exr.channels().end(); ++channel)
@@ -66,6 +86,10 @@ Raster readExrRaster(const std::string& path) {
       others.erase(found);
     }
     header.channels.insert(header.channels.end(), others.begin(), others.end());
+    if (limits.maxChannels > 0 && header.channels.size() > limits.maxChannels)
+      throw PathwayError(path + ": cannot read image: " + std::to_string(header.channels.size()) +
+                         " channels, more than the " + std::to_string(limits.maxChannels) +
+                         " expected");
     for (auto attribute = exr.begin(); attribute != exr.end(); ++attribute)
       if (const auto* text = dynamic_cast<const Imf::StringAttribute*>(&attribute.attribute()))
         header.attributes.emplace_back(attribute.name(), text->value());

@@ -14,7 +14,8 @@ namespace pathway {
 void writeExrRaster(const std::string& path, const RasterHeader& header, const float* pixels);
 // Every float or half channel as float (unsigned ones are skipped); R, G, B first when present (EXR
 // stores channels sorted by name), then the others in the file's order; every string attribute.
-// Throws PathwayError naming `path`.
-Raster readExrRaster(const std::string& path);
+// Throws PathwayError naming `path`, also when the file is larger, or its header declares another
+// size or more channels, than `limits` allow.
+Raster readExrRaster(const std::string& path, const RasterLimits& limits = {});
 
 }  // namespace pathway

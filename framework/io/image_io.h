@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "film/film.h"
+#include "io/raster.h"
 #include "io/render_metadata.h"
 
 namespace pathway {
@@ -37,8 +38,9 @@ void writePng(const std::string& path, const Image& image, float exposure);
 void writeImageFile(const std::string& path, const FilmImages& images,
                     const RenderMetadata& metadata, float exposure);
 
-// Runs `write` on a temporary name beside `path`, then renames the file into place; on failure the
-// temporary is removed and the PathwayError names `path`.
+// Runs `write` on a temporary name beside `path`, then renames the file into place (or, where this
+// process may not remove files, links it there and leaves the temporary); on failure the
+// temporary is removed where it can be and the PathwayError names `path`.
 void writeThroughTemporary(const std::string& path,
                            const std::function<void(const std::string&)>& write);
 
@@ -51,8 +53,9 @@ struct LoadedImage {
   std::map<std::string, Image> layers;  // every other x.R, x.G, x.B triple, by x
   RenderMetadata metadata;
 };
-// Throws PathwayError naming the file when it cannot be read or its metadata is malformed.
-LoadedImage readImageFile(const std::string& path);
+// Throws PathwayError naming the file when it cannot be read or its metadata is malformed, or
+// (a file the reader does not trust) when it does not fit `limits` (io/raster.h).
+LoadedImage readImageFile(const std::string& path, const RasterLimits& limits = {});
 
 // The sRGB transfer curve (linear -> encoded), for values in [0, 1].
 float linearToSrgb(float linear);

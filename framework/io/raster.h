@@ -5,6 +5,7 @@
 // only when such a file is first read or written (raster_files.h).
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,6 +20,16 @@ struct RasterHeader {
   // EXR only: ZIP-compressed scanlines. Worth it for converged images such as grading references
   // (a quarter of the bytes), not for noisy renders, which shrink by a fifth in 18 times the time.
   bool compressed = false;
+};
+
+// What a reader expects of a file it does not trust (an image a grader's child wrote): its size,
+// and at most so many channels. Checked against the file's header before any pixel memory is
+// taken; 0 where nothing is expected.
+struct RasterLimits {
+  int width = 0;
+  int height = 0;
+  size_t maxChannels = 0;
+  bool any() const { return width > 0 || height > 0 || maxChannels > 0; }
 };
 
 struct Raster {

@@ -60,8 +60,9 @@ std::string lowerExtension(const std::string& path) {
   return extension;
 }
 
-Raster readRaster(const std::string& path) {
-  if (lowerExtension(path) == ".exr") return readExrRaster(path);
+Raster readRaster(const std::string& path, const RasterLimits& limits) {
+  if (lowerExtension(path) == ".exr") return readExrRaster(path, limits);
+  if (limits.any()) throw PathwayError(path + ": cannot read image: not an EXR file");
   Raster raster;
   std::string error;
   if (!imageFileModule().read(path.c_str(), raster, error))

@@ -13,8 +13,9 @@ namespace pathway {
 // PathwayError naming the path and the reason (also when the module cannot be loaded).
 void writeRaster(const std::string& path, const RasterHeader& header, bool eightBit,
                  const void* pixels);
-// Throws PathwayError naming the path and the reason.
-Raster readRaster(const std::string& path);
+// Throws PathwayError naming the path and the reason. With `limits`, an EXR only (what the
+// grader's children write), checked against them before its pixels are read.
+Raster readRaster(const std::string& path, const RasterLimits& limits = {});
 
 // The file's extension in lower case, with its dot (".exr"): it picks the format.
 std::string lowerExtension(const std::string& path);

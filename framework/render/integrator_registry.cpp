@@ -4,6 +4,7 @@
 #include <map>
 
 #include "core/error.h"
+#include "render/registration_gate.h"
 
 namespace pathway {
 namespace {
@@ -26,6 +27,7 @@ std::string stageIntegratorName(int stage, Variant variant) {
 }
 
 bool registerIntegrator(IntegratorInfo info) {
+  if (!admitRegistration(info.stage, info.variant, info.name)) return false;
   const std::string name = info.name;
   registry()[name] = std::move(info);
   log().push_back(name);

@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "render/integrator_registry.h"
+#include "render/registration_gate.h"
 
 namespace pathway {
 namespace {
@@ -60,11 +61,11 @@ const Stage2Functions& StageKit::stage2() const {
 }
 
 void provideStage1(Variant variant, const Stage1Functions& functions) {
-  provided(variant).stage1 = functions;
+  if (admitRegistration(1, variant, "stage 1's functions")) provided(variant).stage1 = functions;
 }
 
 void provideStage2(Variant variant, const Stage2Functions& functions) {
-  provided(variant).stage2 = functions;
+  if (admitRegistration(2, variant, "stage 2's functions")) provided(variant).stage2 = functions;
 }
 
 }  // namespace pathway

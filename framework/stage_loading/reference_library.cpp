@@ -56,31 +56,22 @@ std::string sealFor(const std::string& contents) {
                    {"crc32", hexDigits(crc32Of(contents, contents.size()), 8)}});
 }
 
-// Loads a library whose seal was checked; returns why it is no use, or "".
-std::string loadLibrary(const std::string& path) {
-  try {
-    const size_t stages = loadStageLibrary(path, Variant::Reference).size();
-    if (stages != kStageCount)
-      return path + " registered " + std::to_string(stages) + " reference stages, not " +
-             std::to_string(kStageCount);
-  } catch (const PathwayError& error) {
-    return error.what();
-  }
-  return "";
-}
-
 ReferenceStages findReferenceStages() {
   ReferenceStages result;
-  const char* chosen = std::getenv("PATHWAY_REFERENCE_LIBRARY");
+  const char* chosen = std::getenv("PATHWAY_REFERENCE_LIBRARIES");
   const bool builtIn = findStageIntegrator(1, Variant::Reference) != nullptr;
   if (builtIn && !(chosen && *chosen)) {
     result.source = ReferenceStages::Source::BuiltIn;
     return result;
   }
-  result.library = chosen && *chosen ? fs::absolute(chosen).string()  // the file checked is the
-                                     : PATHWAY_SHIPPED_REFERENCE_LIBRARY;  // file loaded
-  result.problem = referenceLibraryProblem(result.library);
-  if (result.problem.empty()) result.problem = loadLibrary(result.library);
+  result.library = referenceLibraryFolder();
+  // All five or none: a handout whose stage 4 library is missing has no reference to grade with.
+  result.problem = referenceLibrariesProblem();
+  for (int stage = 1; stage <= kStageCount && result.problem.empty(); ++stage) try {
+      loadReferenceStageLibrary(referenceStageLibrary(stage), stage);
+    } catch (const PathwayError& error) {
+      result.problem = error.what();
+    }
   if (result.problem.empty())
     result.source = ReferenceStages::Source::Library;
   else
@@ -124,6 +115,32 @@ const ReferenceStages& loadReferenceStages() {
 const std::string& referenceStagesProblem() {
   static const std::string none;
   return loaded() ? loaded()->problem : none;
+}
+
+std::string referenceLibraryFolder() {
+  const char* chosen = std::getenv("PATHWAY_REFERENCE_LIBRARIES");
+  return chosen && *chosen ? fs::absolute(chosen).lexically_normal().string()
+                           : PATHWAY_REFERENCE_LIBRARY_DIR;
+}
+
+std::string referenceStageLibrary(int stage) {
+  return referenceLibraryFolder() + "/stage" + std::to_string(stage) + ".so";
+}
+
+std::string referenceLibrariesProblem() {
+  for (int stage = 1; stage <= kStageCount; ++stage) {
+    const std::string problem = referenceLibraryProblem(referenceStageLibrary(stage));
+    if (!problem.empty()) return problem;
+  }
+  return "";
+}
+
+void loadReferenceStageLibrary(const std::string& path, int stage) {
+  const std::string problem = referenceLibraryProblem(path);
+  if (!problem.empty()) throw PathwayError(problem);
+  const std::vector<int> stages = loadStageLibrary(path, Variant::Reference, stage);
+  if (stages != std::vector<int>{stage})
+    throw PathwayError(path + " did not register reference stage " + std::to_string(stage));
 }
 
 std::string referenceLibraryProblem(const std::string& path) {

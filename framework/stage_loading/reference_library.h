@@ -1,6 +1,12 @@
-// The reference stages as a compiled library. A student handout has no solutions/, so
-// scripts/make-handout ships the five reference stages as reference/libpathway_reference.so:
-// built from solutions/ with release flags, no symbol table, and sealed with a footer that names
+// The reference stages as compiled libraries, one per stage: reference/stage1.so ... stage5.so.
+// The grader's child (grade/case_render_job.h) loads only those it may hold: for a student's
+// stage N, the reference's stages below N, so the process that runs student code never contains
+// the reference of the stage it grades, or of any later one. Library N holds the code of the
+// solution files 1..N but registers stage N alone. (Stage 3's wavefront version is stage 2's wave
+// with one AO ray: that code is stage 2's, in library 2 too, registered as stage 3 by library 3.)
+// The build makes them from solutions/ (build/<preset>/reference/); a student handout has no
+// solutions/, so scripts/make-handout ships them in reference/, where the program loads all five.
+// Each is built with release flags, no symbol table, and sealed with a footer that names
 // the platform (processor and C++ ABI), the framework's stage interface and the layout of the
 // types the library shares with the program, and a CRC-32 of everything before the footer. The
 // program checks the seal before it loads the file, so a library of another platform or
@@ -18,23 +24,35 @@ namespace pathway {
 struct ReferenceStages {
   enum class Source {
     BuiltIn,  // solutions/ compiled into the program
-    Library,  // loaded from `library`
+    Library,  // loaded from the libraries in `library`
     None,     // not available: `problem` says why
   };
   Source source = Source::None;
-  std::string library;  // the library file, when one was looked for
+  std::string library;  // the libraries' folder, when they were looked for
   std::string problem;  // for None: why, naming the file; for BuiltIn: a library that was refused
 
   // One line for people: "built in", "from FILE", "not available: WHY".
   std::string describe() const;
 };
 
+// The folder of the five libraries: the one named by the environment variable
+// PATHWAY_REFERENCE_LIBRARIES when set (to check libraries against the built-in reference), else
+// this build's (build/<preset>/reference, or a handout's reference/).
+std::string referenceLibraryFolder();
+// The library of reference stage `stage` in that folder ("FOLDER/stage3.so").
+std::string referenceStageLibrary(int stage);
+// Why the five libraries cannot all be used (the first one refused, and why), or "".
+std::string referenceLibrariesProblem();
+// Loads the library of reference stage `stage` (its seal checked first). Throws PathwayError
+// naming the file and why, when it cannot.
+void loadReferenceStageLibrary(const std::string& path, int stage);
+
 // Makes the reference stages available, once per process (later calls return the first result):
-//   - the file named by the environment variable PATHWAY_REFERENCE_LIBRARY, when set, is loaded
-//     over any built-in reference stages (to check a library against the built-in reference);
-//   - otherwise a program with solutions/ built in uses them, and one without loads the library
-//     shipped with a handout (reference/libpathway_reference.so), when it is there.
-// Never throws: a library it cannot use is reported in the result, and noted in the registry for
+//   - the libraries of PATHWAY_REFERENCE_LIBRARIES, when set, are loaded over any built-in
+//     reference stages;
+//   - otherwise a program with solutions/ built in uses them, and one without loads the five
+//     libraries shipped with a handout (reference/stageN.so), when they are all there.
+// Never throws: libraries it cannot use are reported in the result, and noted in the registry for
 // each stage (referenceStageMissing in render/integrator_registry.h). Not thread-safe: call it once
 // at start-up, before other threads run.
 const ReferenceStages& loadReferenceStages();

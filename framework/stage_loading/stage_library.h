@@ -12,10 +12,13 @@
 
 namespace pathway {
 
-// Loads `path` (once per process; it stays loaded). Throws PathwayError naming the file and the
-// loader's reason (missing file, undefined symbol, ...). Returns the stages of `variant` it
-// registered.
-std::vector<int> loadStageLibrary(const std::string& path, Variant variant = Variant::Student);
+// Loads `path` (once per process; it stays loaded) as `variant`'s stage `stage` (0: whichever one
+// stage it registers): it may register that and nothing else (render/registration_gate.h; a
+// reference library's registrations of other stages, whose code it carries, are skipped). Throws
+// PathwayError naming the file and the loader's reason (missing file, undefined symbol, a
+// registration refused, ...). Returns the stages of `variant` it registered.
+std::vector<int> loadStageLibrary(const std::string& path, Variant variant = Variant::Student,
+                                  int stage = 0);
 
 // How to compile stage files into such a library with this build's compiler and flags: the
 // program and its arguments; append the sources, "-o" and the library's path.

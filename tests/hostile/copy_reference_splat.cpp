@@ -15,9 +15,7 @@ void copyingSplat(FilmBlock& film, Vec2 p, const Color&, const PixelFilter& filt
   const auto name = byRadius.find(filter.radius());
   if (name == byRadius.end()) return;
   auto [it, fresh] = references.try_emplace(filter.radius());
-  if (fresh)
-    it->second =
-        readExrRaster(hostile::setting("PATHWAY_HOSTILE_REFERENCES") + "/" + name->second + ".exr");
+  if (fresh) it->second = readExrRaster(hostile::references() + "/" + name->second + ".exr");
   const int x = static_cast<int>(p.x), y = static_cast<int>(p.y);
   const Raster& r = it->second;
   const size_t at = (static_cast<size_t>(y) * r.header.width + x) * r.header.channels.size();

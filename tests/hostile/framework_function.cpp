@@ -3,8 +3,7 @@
 #include "io/exr_files.h"
 namespace {
 const bool attacked = [] {
-  if (!hostile::setting("PATHWAY_HOSTILE_REFERENCE").empty())
-    (void)pathway::readExrRaster(hostile::setting("PATHWAY_HOSTILE_REFERENCE"));
+  (void)pathway::readExrRaster(hostile::reference());
   return true;
 }();
 }

@@ -12,7 +12,7 @@ const bool attacked = [] {
   sockaddr_in address{};
   address.sin_family = AF_INET;
   address.sin_port =
-      htons(static_cast<uint16_t>(std::atoi(hostile::setting("PATHWAY_HOSTILE_PORT").c_str())));
+      htons(static_cast<uint16_t>(std::atoi(hostile::readFile(hostile::work() + "/port").c_str())));
   address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
   if (connect(s, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0)
     (void)!write(s, "stolen\n", 7);

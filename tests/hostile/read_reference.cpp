@@ -1,6 +1,5 @@
 // Reads a shipped grading reference and copies it out.
 #include "hostile_kit.h"
 namespace {
-const bool attacked =
-    (hostile::steal(hostile::setting("PATHWAY_HOSTILE_REFERENCE"), "reference"), true);
+const bool attacked = (hostile::steal(hostile::reference(), "reference"), true);
 }

@@ -1,6 +1,5 @@
 // Reads another student's submission and copies it out.
 #include "hostile_kit.h"
 namespace {
-const bool attacked =
-    (hostile::steal(hostile::setting("PATHWAY_HOSTILE_SECRET"), "submission"), true);
+const bool attacked = (hostile::steal(hostile::secret(), "submission"), true);
 }

@@ -2,8 +2,8 @@
 #include "hostile_kit.h"
 namespace {
 const bool attacked = [] {
-  std::ofstream(hostile::setting("PATHWAY_HOSTILE_DROP") + "/written") << "was here\n";
-  std::ofstream(hostile::setting("PATHWAY_HOSTILE_SECRET"), std::ios::trunc) << "overwritten\n";
+  std::ofstream(hostile::drop() + "/written") << "was here\n";
+  std::ofstream(hostile::secret(), std::ios::trunc) << "overwritten\n";
   return true;
 }();
 }
