@@ -118,8 +118,11 @@ FolderUse folderUse(const std::string& folder) {
 // A descriptor moved to 10 or above (close-on-exec), so that the child's 0-3 can be laid out
 // from it in any order, whatever this process had open. Closes the original.
 int movedUp(int fd) {
+  if (fd < 0) return fd;  // errno says why it was not opened
   const int moved = ::fcntl(fd, F_DUPFD_CLOEXEC, 10);
+  const int why = errno;
   ::close(fd);
+  errno = why;
   return moved;
 }
 

@@ -462,6 +462,7 @@ SandboxState enterSandbox(const SandboxPolicy& policy, SandboxMode mode) {
   if (user.changes) {
     int deathSignal = 0;  // a change of user clears it: it is set again after
     ::prctl(PR_GET_PDEATHSIG, &deathSignal, 0, 0, 0);
+    const pid_t parent = ::getppid();
     const bool changed = ::setgroups(0, nullptr) == 0 &&
                          ::setresgid(user.gid, user.gid, user.gid) == 0 &&
                          ::setresuid(user.uid, user.uid, user.uid) == 0;
@@ -482,7 +483,7 @@ SandboxState enterSandbox(const SandboxPolicy& policy, SandboxMode mode) {
     }
     if (deathSignal != 0) {
       ::prctl(PR_SET_PDEATHSIG, deathSignal, 0, 0, 0);
-      if (::getppid() == 1) std::_Exit(1);  // the parent is gone already
+      if (::getppid() != parent) std::_Exit(1);  // the parent is gone already
     }
   }
   // What is in force, read back from the process itself: its real user.
