@@ -8,11 +8,10 @@
 //   pathway-child render-grading-cases ...   the grader's job (its command line, from the grader)
 //   pathway-child seal LIBRARY                seal a freshly linked reference library
 #include <cstdio>
-#include <exception>
 #include <string>
 #include <vector>
 
-#include "core/error.h"
+#include "app/reporting_errors.h"
 #include "grade/case_render_job.h"
 #include "render/registration_gate.h"
 #include "stage_loading/reference_library.h"
@@ -21,7 +20,7 @@ int main(int argc, char** argv) {
   // Nothing registers from here on but the libraries a job loads, each in its own window.
   pathway::endBuiltInRegistrations();
   const std::vector<std::string> arguments(argv + 1, argv + argc);
-  try {
+  return pathway::runReportingErrors([&] {
     if (!arguments.empty() && arguments[0] == pathway::CaseRenderJob::kCommand) {
       pathway::runCaseRenderJob(pathway::CaseRenderJob::fromArguments(arguments));
       return 0;
@@ -30,16 +29,10 @@ int main(int argc, char** argv) {
       pathway::sealReferenceLibrary(arguments[1]);
       return 0;
     }
-  } catch (const pathway::PathwayError& error) {
-    std::fprintf(stderr, "pathway: error: %s\n", error.what());
-    return 1;
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "pathway: internal error: %s\n", error.what());
+    std::fprintf(stderr,
+                 "pathway-child: the grader's own program (usage: pathway-child %s ... | seal "
+                 "LIBRARY); grade with `pathway grade`\n",
+                 pathway::CaseRenderJob::kCommand);
     return 2;
-  }
-  std::fprintf(stderr,
-               "pathway-child: the grader's own program (usage: pathway-child %s ... | seal "
-               "LIBRARY); grade with `pathway grade`\n",
-               pathway::CaseRenderJob::kCommand);
-  return 2;
+  });
 }

@@ -1,12 +1,11 @@
 // pathway: the course's one program. `pathway --help` lists the subcommands.
 #include <CLI/CLI.hpp>
 #include <cstdio>
-#include <exception>
 #include <string>
 #include <vector>
 
 #include "app/commands.h"
-#include "core/error.h"
+#include "app/reporting_errors.h"
 #include "core/sandboxed_command.h"
 #include "render/registration_gate.h"
 #include "stage_loading/reference_library.h"
@@ -51,7 +50,7 @@ int main(int argc, char** argv) {
   const pathway::ReferenceStages& stages = pathway::loadReferenceStages();
   if (!stages.problem.empty() && !reference.app->parsed())
     std::fprintf(stderr, "pathway: note: reference stages %s\n", stages.describe().c_str());
-  try {
+  return pathway::runReportingErrors([&] {
     for (const pathway::Command& command : commands) {
       if (!command.app->parsed()) continue;
       // The commands that render the student's stages load them (stage_loading/student_stages.h);
@@ -60,12 +59,6 @@ int main(int argc, char** argv) {
       if (name == "render" || name == "view" || name == "chart") pathway::loadStudentStages();
       return command.run();
     }
-  } catch (const pathway::PathwayError& error) {
-    std::fprintf(stderr, "pathway: error: %s\n", error.what());
-    return 1;
-  } catch (const std::exception& error) {
-    std::fprintf(stderr, "pathway: internal error: %s\n", error.what());
-    return 2;
-  }
-  return 0;
+    return 0;
+  });
 }

@@ -144,6 +144,15 @@ std::vector<std::string> untrustedChildEnvironment() {
   return environment;
 }
 
+ChildOptions untrustedChildOptions(bool confined) {
+  ChildOptions options;
+  if (confined)
+    options.environment = untrustedChildEnvironment();
+  else
+    options.keepDescriptors = true;
+  return options;
+}
+
 std::string ChildOutcome::describe(double timeLimit) const {
   if (!started) return "could not be started";
   if (overQuota)

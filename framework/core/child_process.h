@@ -55,6 +55,9 @@ constexpr int kChildReportDescriptor = 3;
 // The environment of a child that runs untrusted code: a fixed PATH, a neutral locale and home,
 // and (in a sanitizer build) the sanitizers' own options; nothing else of this process's.
 std::vector<std::string> untrustedChildEnvironment();
+// How a child that runs untrusted code starts: `confined`, with that environment and none of
+// this process's files; unconfined (a grader's --sandbox off, which confines nothing), with both.
+ChildOptions untrustedChildOptions(bool confined);
 
 // Runs `arguments` (arguments[0] is the program, found on PATH when it has no '/'), killing it
 // (and its children) after `timeLimit` seconds. `outputFile` receives its output. When it ends,

@@ -343,6 +343,10 @@ std::vector<std::string> systemReadablePaths() {
           "/proc/self"};
 }
 
+namespace {
+
+// Whether every user may reach `path`: each folder on the way searchable by others, the path
+// itself readable (and searchable, if a folder). A missing path is reachable (nothing to read).
 bool othersCanReach(const std::string& path) {
   struct stat info {};
   if (::stat(path.c_str(), &info) != 0) return true;
@@ -356,6 +360,8 @@ bool othersCanReach(const std::string& path) {
   }
   return true;
 }
+
+}  // namespace
 
 std::string sandboxTemporaryRoot() {
   std::error_code error;

@@ -85,9 +85,6 @@ SandboxUser sandboxUser();
 // it; does nothing when the mode is Off or the grader is not root. Throws PathwayError naming the
 // folder when it cannot.
 void shareWithSandboxUser(const std::string& folder, SandboxMode mode);
-// Whether every user may reach `path`: each folder on the way searchable by others, the path
-// itself readable (and searchable, if a folder). A missing path is reachable (nothing to read).
-bool othersCanReach(const std::string& path);
 // Where a grader makes the folders its sandboxed processes read and write: the system's temporary
 // folder where others can reach it, else /tmp.
 std::string sandboxTemporaryRoot();

@@ -224,8 +224,7 @@ void runCaseRenderJob(const CaseRenderJob& job) {
   // The reference stages the job may hold: trusted code, loaded (and sealed, checked) while this
   // process is still the grader's own.
   for (int stage : job.referenceStages)
-    loadReferenceStageLibrary(job.referenceFolder + "/stage" + std::to_string(stage) + ".so",
-                              stage);
+    loadReferenceStageLibrary(referenceStageLibrary(stage, job.referenceFolder), stage);
   // Shut in before the first line of student code runs: loading a library runs its static
   // initializers. No thread has started yet (the renderer's start with the first case).
   const SandboxState sandbox = enterSandbox(job.sandboxPolicy(), job.sandbox);

@@ -14,6 +14,7 @@
 
 #include "core/child_process.h"
 #include "core/error.h"
+#include "core/regular_file_copy.h"
 #include "core/temporary_folder.h"
 #include "engine/pixel_in_progress.h"
 #include "grade/case_render_job.h"
@@ -106,14 +107,9 @@ std::vector<RenderOutcome> renderInChildren(const std::vector<CaseRenderJob::Cas
   job.reportsSandbox = true;
   for (const std::string& library : run.stageLibraries)
     job.stageLibraries.push_back(fs::absolute(library).string());
-  ChildOptions options;
+  ChildOptions options = untrustedChildOptions(run.sandbox != SandboxMode::Off);
   options.reportChannel = true;
-  if (run.sandbox == SandboxMode::Off) {
-    options.keepDescriptors = true;  // unconfined: the grader's environment and files too
-  } else {
-    options.environment = untrustedChildEnvironment();
-    options.folderQuotaBytes = kChildFolderQuotaBytes;
-  }
+  if (run.sandbox != SandboxMode::Off) options.folderQuotaBytes = kChildFolderQuotaBytes;
   for (size_t next = 0; next < cases.size();) {
     job.cases.assign(cases.begin() + next, cases.end());
     double total = kChildGraceSeconds;
@@ -302,14 +298,9 @@ GradeSummary gradeStages(const GradingRun& run, const ComparisonSettings& settin
   for (size_t i = 0; i < staged.stageLibraries.size(); ++i) {
     const fs::path copy = libraries / (std::to_string(i) + "-" +
                                        fs::path(staged.stageLibraries[i]).filename().string());
-    std::error_code error;  // one that cannot be copied stays where it is: the child says why
-    // A library in a folder its compiler could write: never followed through a link.
-    if (!fs::is_regular_file(fs::symlink_status(staged.stageLibraries[i], error)) ||
-        !fs::copy_file(staged.stageLibraries[i], copy, error) || error)
-      continue;
-    fs::permissions(copy, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
-                              fs::perms::others_read);
-    staged.stageLibraries[i] = copy.string();
+    // A library in a folder its compiler could write: never followed through a link. One that
+    // cannot be copied stays where it is: the child says why it cannot load it.
+    if (copyRegularFile(staged.stageLibraries[i], copy)) staged.stageLibraries[i] = copy.string();
   }
   std::map<int, int> casesPerStage, done;
   for (const GradingCase* c : run.cases) ++casesPerStage[c->stage];

@@ -1,9 +1,5 @@
 #include "grade/submission.h"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -12,6 +8,7 @@
 
 #include "core/child_process.h"
 #include "core/error.h"
+#include "core/regular_file_copy.h"
 #include "core/sandboxed_command.h"
 #include "stage_loading/stage_library.h"
 #include "stages/stage_catalog.h"
@@ -100,37 +97,11 @@ bool isStagedAlong(const fs::path& path) {
 constexpr uintmax_t kStagedFileBytes = 1u << 20;
 constexpr size_t kStagedFiles = 200;
 
-// Copies the regular file `from` to `to`, readable by all, if it has at most `most` bytes; false
-// when it is no such file. Read through one descriptor opened without following a link: a
-// submission's symbolic link to a file of the grading machine is never followed, nor swapped in
-// between a check and the copy.
-bool copyRegularFile(const fs::path& from, const fs::path& to, uintmax_t most = kStagedFileBytes) {
-  const int in = ::open(from.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
-  if (in < 0) return false;
-  struct stat info {};
-  const bool regular = ::fstat(in, &info) == 0 && S_ISREG(info.st_mode) &&
-                       static_cast<uintmax_t>(info.st_size) <= most;
-  std::string bytes;
-  char buffer[1 << 16];
-  for (ssize_t n; regular && (n = ::read(in, buffer, sizeof buffer)) > 0;) bytes.append(buffer, n);
-  ::close(in);
-  if (!regular) return false;
-  std::error_code error;
-  fs::create_directories(to.parent_path(), error);
-  std::ofstream out(to, std::ios::binary | std::ios::trunc);
-  if (!(out << bytes) || !out.flush()) return false;
-  fs::permissions(to,
-                  fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
-                      fs::perms::others_read,
-                  error);
-  return true;
-}
-
 // A folder's headers (every file named *.h below it), copied to `to`.
 void copyHeaders(const fs::path& from, const fs::path& to) {
   for (const auto& entry : fs::recursive_directory_iterator(from))
     if (entry.path().extension() == ".h")
-      copyRegularFile(entry.path(), to / fs::relative(entry.path(), from));
+      copyRegularFile(entry.path(), to / fs::relative(entry.path(), from), kStagedFileBytes);
 }
 
 // Every folder below `root` searchable and readable by all (the files are already readable).
@@ -172,7 +143,7 @@ SubmissionBuild buildSubmission(const Submission& submission, const std::string&
     std::error_code error;
     // The stage file whatever its size (the compiler's limits hold it); the headers and sources
     // beside it and in folders below it (not through links) if small.
-    if (!copyRegularFile(file, to / fs::path(file).filename(), UINTMAX_MAX))
+    if (!copyRegularFile(file, to / fs::path(file).filename()))
       build.stages[stageNumber].problem =
           fs::path(file).filename().string() +
           " did not compile: it is no regular file (a symbolic link is not followed)";
@@ -181,7 +152,7 @@ SubmissionBuild buildSubmission(const Submission& submission, const std::string&
          it.increment(error))
       if (it->is_regular_file() && it->path() != fs::path(file) && isStagedAlong(it->path()) &&
           ++along <= kStagedFiles)
-        copyRegularFile(it->path(), to / fs::relative(it->path(), folder));
+        copyRegularFile(it->path(), to / fs::relative(it->path(), folder), kStagedFileBytes);
   }
   fs::create_directories(sources);
   openToAll(sources);
@@ -199,11 +170,7 @@ SubmissionBuild buildSubmission(const Submission& submission, const std::string&
       probeSandbox(sandboxedCompile(probeCommand, built.string(), timeLimit, sandbox).policy,
                    sandbox)
           .summary();
-  ChildOptions options;
-  if (sandbox == SandboxMode::Off)
-    options.keepDescriptors = true;  // unconfined: the grader's environment and files too
-  else
-    options.environment = untrustedChildEnvironment();
+  const ChildOptions options = untrustedChildOptions(sandbox != SandboxMode::Off);
   for (const auto& [stageNumber, file] : submission.files) {
     StageBuild& result = build.stages[stageNumber];
     if (!result.problem.empty()) continue;  // not staged

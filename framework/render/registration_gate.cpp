@@ -63,7 +63,7 @@ bool admitRegistration(int stage, Variant variant, const std::string& what) {
     return false;
   };
   if (stage != 0 && open.stage != 0 && stage != open.stage) {
-    if (open.window.skipOtherStages) return false;
+    if (open.window.variant == Variant::Reference) return false;  // an earlier stage's code
     return refuse("this library registers stage " + std::to_string(open.stage) +
                   ", and a library registers one stage only");
   }

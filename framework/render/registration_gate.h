@@ -17,12 +17,11 @@
 
 namespace pathway {
 
+// A reference stage's library carries the code of the earlier stages (stage 3's wavefront version
+// is stage 2's wave): in its window their registrations are skipped, not refused.
 struct RegistrationWindow {
   Variant variant = Variant::Student;
   int stage = 0;  // the one stage it may register; 0: any one (its first registration fixes it)
-  // A reference stage's library carries the code of the earlier stages its own version reuses
-  // (stage 3's wavefront version is stage 2's wave); their registrations are skipped, not refused.
-  bool skipOtherStages = false;
 };
 
 // Opens the window for one library's load; closeRegistrationWindow returns what was refused in

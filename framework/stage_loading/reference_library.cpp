@@ -123,8 +123,8 @@ std::string referenceLibraryFolder() {
                            : PATHWAY_REFERENCE_LIBRARY_DIR;
 }
 
-std::string referenceStageLibrary(int stage) {
-  return referenceLibraryFolder() + "/stage" + std::to_string(stage) + ".so";
+std::string referenceStageLibrary(int stage, const std::string& folder) {
+  return folder + "/stage" + std::to_string(stage) + ".so";
 }
 
 std::string referenceLibrariesProblem() {

@@ -39,8 +39,8 @@ struct ReferenceStages {
 // PATHWAY_REFERENCE_LIBRARIES when set (to check libraries against the built-in reference), else
 // this build's (build/<preset>/reference, or a handout's reference/).
 std::string referenceLibraryFolder();
-// The library of reference stage `stage` in that folder ("FOLDER/stage3.so").
-std::string referenceStageLibrary(int stage);
+// The library of reference stage `stage` in `folder` ("FOLDER/stage3.so"), by default that one.
+std::string referenceStageLibrary(int stage, const std::string& folder = referenceLibraryFolder());
 // Why the five libraries cannot all be used (the first one refused, and why), or "".
 std::string referenceLibrariesProblem();
 // Loads the library of reference stage `stage` (its seal checked first). Throws PathwayError

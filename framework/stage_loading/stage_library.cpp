@@ -50,7 +50,7 @@ std::vector<int> loadStageLibrary(const std::string& path, Variant variant, int 
       return closeRegistrationWindow();
     }
     bool open = true;
-  } window({variant, stage, variant == Variant::Reference});
+  } window({variant, stage});
   void* loaded = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
   const std::string refused = window.close();
   if (!loaded) throw PathwayError(loadFailure(path, dlerror()));
