@@ -175,6 +175,84 @@ TEST_F(Diagnosis, OcclusionSaysWhichWayAndHowFarInWordsThatAgree) {
   patterns_.erase(pattern::kLongerRays);
 }
 
+// Each message's direction follows from the measured difference, both ways.
+TEST_F(Diagnosis, AFactorSaysBrighterOrDarkerAsMeasured) {
+  for (const float factor : {0.97f, 1.03f}) {
+    Image image = truth_;
+    for (Color& c : image.pixels) c *= factor;
+    const pathway::Diagnosis d = diagnose(withNoise(image, 7));
+    EXPECT_EQ(d.cause, LikelyCause::Scale) << d.line();
+    EXPECT_NE(d.explanation.find(factor > 1.0f ? "% brighter" : "% darker"), std::string::npos)
+        << d.line();
+  }
+}
+
+// +1 where a message says the image is wider or blurrier, -1 narrower or sharper ("about X times
+// as wide": the sign of X - 1), 0 where it says neither.
+int widthDirection(const std::string& text) {
+  const bool wider =
+      text.find("wider") != std::string::npos || text.find("blurrier") != std::string::npos;
+  const bool narrower =
+      text.find("narrower") != std::string::npos || text.find("sharper") != std::string::npos;
+  if (wider != narrower) return wider ? 1 : -1;
+  if (const size_t at = text.find(" times as wide"); at != std::string::npos) {
+    const size_t start = text.rfind("about ", at);
+    const double times = std::stod(text.substr(start + 6, at - start - 6));
+    return times > 1.0 ? 1 : times < 1.0 ? -1 : 0;
+  }
+  return 0;
+}
+
+TEST_F(Diagnosis, EdgesSayWiderOrNarrowerAsMeasured) {
+  // A filter's width as the stage 1 references store it: the image through a wider filter minus
+  // a narrower one (here the scene blurred minus the scene sharpened, over each other's edges).
+  Image blurred = truth_, sharpened = truth_;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      Color sum(0.0f);
+      for (int d = -1; d <= 1; ++d)
+        sum += truth_.at(std::clamp(x + d, 0, kSize - 1), y) +
+               truth_.at(x, std::clamp(y + d, 0, kSize - 1));
+      blurred.at(x, y) = sum / 6.0f;
+      sharpened.at(x, y) = truth_.at(x, y) + 0.5f * (truth_.at(x, y) - blurred.at(x, y));
+    }
+  Image wider = blurred;
+  for (size_t p = 0; p < wider.pixels.size(); ++p) wider.pixels[p] -= sharpened.pixels[p];
+  for (const bool withWidth : {false, true}) {
+    if (withWidth) patterns_[pattern::kWiderFilter] = &wider;
+    for (const float a : {-0.6f, 0.6f}) {
+      Image image = truth_;
+      for (size_t p = 0; p < image.pixels.size(); ++p) image.pixels[p] += a * wider.pixels[p];
+      const pathway::Diagnosis d = diagnose(withNoise(image, 7));
+      EXPECT_EQ(d.cause, LikelyCause::Edges) << d.line();
+      EXPECT_EQ(widthDirection(d.explanation), a > 0 ? 1 : -1) << d.line();
+    }
+  }
+  patterns_.erase(pattern::kWiderFilter);
+}
+
+TEST_F(Diagnosis, LightSaysTooBrightOrTooDarkAsMeasured) {
+  // Light after bounces in a region of its own (more of it: paths that go on too long; less:
+  // paths that stop early).
+  const Image indirect = boxFiltered([](double x, double y) {
+    const double dx = x - 48.0, dy = y - 48.0;
+    return 0.3 * std::exp(-(dx * dx + dy * dy) / 90.0);
+  });
+  patterns_[pattern::kIndirect] = &indirect;
+  for (const auto& [mask, cause] :
+       {std::pair<const Image*, LikelyCause>{&direct_, LikelyCause::Lit},
+        {&indirect, LikelyCause::Indirect}})
+    for (const float a : {-0.25f, 0.25f}) {
+      Image image = truth_;
+      for (size_t p = 0; p < image.pixels.size(); ++p) image.pixels[p] += a * mask->pixels[p];
+      const pathway::Diagnosis d = diagnose(withNoise(image, 7), 4);
+      EXPECT_EQ(d.cause, cause) << d.line();
+      EXPECT_NE(d.explanation.find(a > 0 ? "% too bright" : "% too dark"), std::string::npos)
+          << d.line();
+    }
+  patterns_.erase(pattern::kIndirect);
+}
+
 TEST_F(Diagnosis, OneBrightTileIsLocal) {
   Image image = withNoise(truth_, 7);
   for (int y = 28; y < 32; ++y)

@@ -11,7 +11,8 @@ std::vector<CaseLine> caseLines(const std::string& json) {
   for (const nlohmann::json& test : results.at("tests")) {
     const nlohmann::json& extra = test.at("extra_data");
     lines.push_back({test.at("name"), test.at("status"), extra.at("image"),
-                     extra.at("likely_cause"), test.at("output"), test.at("score")});
+                     extra.at("likely_cause"), test.at("output"), test.at("score"),
+                     extra.at("noise_ratio")});
   }
   return lines;
 }

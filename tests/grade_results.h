@@ -15,6 +15,8 @@ struct CaseLine {
   std::string cause;   // extra_data.likely_cause: "" or "scale", "edges", ...
   std::string output;  // what the case says: its verdict, figures, likely cause
   double score = 0.0;  // its points
+  double noiseRatio =
+      0.0;  // extra_data.noise_ratio: times as noisy as the reference (0: not measured)
 };
 
 std::vector<CaseLine> caseLines(const std::string& json);

@@ -48,6 +48,15 @@ TEST_F(Grader, TheReferenceStagesPassWithFreshSeeds) {
   for (const ResultLine& line : lines) {
     EXPECT_EQ(line.status, "passed") << line.output;
     EXPECT_EQ(line.image, "pass");
+    // The noise note is like for like: the reference reads about 1 wherever its noise is
+    // measured (from stage 2 on); over 1000 seeds per case it stayed within 0.6-1.6.
+    if (line.name.rfind("Stage 1 ", 0) == 0) {
+      EXPECT_EQ(line.noiseRatio, 0.0) << line.name;
+    } else {
+      EXPECT_GE(line.noiseRatio, 0.5) << line.name;
+      EXPECT_LE(line.noiseRatio, 2.0) << line.name;
+    }
+    EXPECT_EQ(line.output.find("times as noisy"), std::string::npos) << line.output;
   }
   // The report has a page and, for a passing case, its image and the reference's: no maps and
   // no difference image, which would look like a failure.
@@ -215,6 +224,14 @@ TEST_P(GraderMutant, IsJudgedByItsImage) {
     EXPECT_GE(imageFailed, 1u) << mutant.description << ": no case of stage " << mutant.stage
                                << " saw the bug";
     EXPECT_EQ(crashed + timedOut, 0u);
+    if (mutant.cause == "noise") {
+      // A required technique left out: the case built to see it names it.
+      size_t named = 0;
+      for (const ResultLine& line : lines)
+        named +=
+            line.cause == "noise" && line.output.find("README.md, Required") != std::string::npos;
+      EXPECT_GE(named, 1u) << test::readTextFile((dir_ / "report/results.json").string());
+    }
   } else if (mutant.expect == "crash-one") {
     // One case crashes; the others (those before it in the same child, those after it in a new
     // child) are judged and pass.

@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "grade/statistics.h"
 #include "sampling/pcg32.h"
@@ -247,14 +249,39 @@ BatchedRender batchedRender(uint64_t seed, double noise, double bias) {
   return render;
 }
 
-TEST(ImageComparison, ANoisierValidRenderPassesByItsOwnVarianceAndABiasStillFails) {
-  const Reference reference = makeReference();
-  const ComparisonSettings settings;
+// What a grading reference holds for the noise note (grading_reference.h): one reference render's
+// jackknife variance of a block mean, and its typical noise, the median over 15 renders like it.
+struct ReferenceNoise {
+  Image jackknife;
+  double typical = 0.0;
+};
+ReferenceNoise referenceNoise(const Reference& reference) {
+  // The batches are independent: a render's jackknife estimates the replicates' variance.
+  ReferenceNoise noise{reference.tileVariance};
+  std::vector<double> typical;
+  for (uint64_t seed = 500; seed < 515; ++seed)
+    typical.push_back(typicalNoise(batchedRender(seed, 1.0, 0.0).jackknife, noise.jackknife, 8));
+  std::nth_element(typical.begin(), typical.begin() + 7, typical.end());
+  noise.typical = typical[7];
+  return noise;
+}
+
+ComparisonInput batchedInput(const Reference& reference, const ReferenceNoise& noise) {
   ComparisonInput input;
   input.reference = &reference.mean;
   input.tileVariance = &reference.tileVariance;
   input.replicates = kReplicates;
   input.negativeValuesAllowed = true;  // Gaussian noise this wide dips below 0
+  input.referenceJackknife = &noise.jackknife;
+  input.referenceTypicalNoise = noise.typical;
+  return input;
+}
+
+TEST(ImageComparison, ANoisierValidRenderPassesByItsOwnVarianceAndABiasStillFails) {
+  const Reference reference = makeReference();
+  const ReferenceNoise noise = referenceNoise(reference);
+  const ComparisonSettings settings;
+  ComparisonInput input = batchedInput(reference, noise);
   // Three times the reference's standard deviation (9 times its variance), unbiased: judged by
   // the reference's noise alone it fails every time; by its own (the jackknife) it passes. Each
   // of the 20 seeds fails by chance with probability about 1e-3 (the two family-wise levels), so
@@ -268,7 +295,7 @@ TEST(ImageComparison, ANoisierValidRenderPassesByItsOwnVarianceAndABiasStillFail
     input.jackknife = &render.jackknife;
     const Comparison judged = compareImages(input, settings);
     EXPECT_TRUE(judged.passed(settings)) << "seed " << seed << "\n" << judged.describe(settings);
-    // Its own variance over the replicates': 9 expected, the jackknife's spread around it.
+    // Its typical noise over a reference render's: 9 expected, the medians' spread around it.
     EXPECT_NEAR(judged.noiseRatio, 9.0, 3.0);
     EXPECT_NE(judged.describe(settings).find("times as noisy as the reference's"),
               std::string::npos);
@@ -290,6 +317,63 @@ TEST(ImageComparison, ANoisierValidRenderPassesByItsOwnVarianceAndABiasStillFail
   EXPECT_LT(capped.omnibusP, settings.omnibusAlpha) << capped.describe(settings);
   EXPECT_NE(capped.describe(settings).find("allow for no more than 64 times"), std::string::npos)
       << capped.describe(settings);
+}
+
+TEST(ImageComparison, TheNoiseNoteComparesLikeWithLike) {
+  const Reference reference = makeReference();
+  const ReferenceNoise noise = referenceNoise(reference);
+  const ComparisonSettings settings;
+  ComparisonInput input = batchedInput(reference, noise);
+  // Renders made as the reference's are read as about as noisy (1), with no note; twice and
+  // four times the standard deviation read about 4 and 16.
+  for (const auto& [deviation, expected] : {std::pair{1.0, 1.0}, {2.0, 4.0}, {4.0, 16.0}}) {
+    for (uint64_t seed = 30; seed < 36; ++seed) {
+      const BatchedRender render = batchedRender(seed, deviation, 0.0);
+      input.image = &render.image;
+      input.jackknife = &render.jackknife;
+      const Comparison judged = compareImages(input, settings);
+      EXPECT_GT(judged.noiseRatio, expected / 1.6) << deviation << ", seed " << seed;
+      EXPECT_LT(judged.noiseRatio, expected * 1.6) << deviation << ", seed " << seed;
+      EXPECT_EQ(judged.describe(settings).find("times as noisy") == std::string::npos,
+                deviation == 1.0)
+          << judged.describe(settings);
+    }
+  }
+  // Without the reference's own jackknife (a reference made before it) there is no note: the
+  // replicates' spread is not estimated the way the render's is.
+  const BatchedRender render = batchedRender(40, 4.0, 0.0);
+  input.image = &render.image;
+  input.jackknife = &render.jackknife;
+  input.referenceJackknife = nullptr;
+  EXPECT_EQ(compareImages(input, settings).noiseRatio, 0.0);
+}
+
+TEST(ImageComparison, ARenderPastTheCasesNoiseBoundFailsNamingTheTechnique) {
+  const Reference reference = makeReference();
+  const ReferenceNoise noise = referenceNoise(reference);
+  const ComparisonSettings settings;
+  ComparisonInput input = batchedInput(reference, noise);
+  input.requiredTechnique = "the stage samples the light (README.md, Required)";
+  // Unbiased and 16 times as noisy: within a bound of 40 it passes with a note; past a bound
+  // of 8 it fails, saying how much noisier and what it left out.
+  const BatchedRender render = batchedRender(50, 4.0, 0.0);
+  input.image = &render.image;
+  input.jackknife = &render.jackknife;
+  input.noiseBound = 40.0;
+  const Comparison within = compareImages(input, settings);
+  EXPECT_FALSE(within.tooNoisy());
+  EXPECT_TRUE(within.passed(settings)) << within.describe(settings);
+  input.noiseBound = 8.0;
+  const Comparison past = compareImages(input, settings);
+  EXPECT_TRUE(past.tooNoisy());
+  EXPECT_FALSE(past.passed(settings));
+  const std::string text = past.describe(settings);
+  EXPECT_NE(text.find("this case allows at most 8 times: the stage samples the light"),
+            std::string::npos)
+      << text;
+  // Without a bound the same render passes.
+  input.noiseBound = 0.0;
+  EXPECT_TRUE(compareImages(input, settings).passed(settings));
 }
 
 TEST(ImageComparison, TheSmallestDetectableBiasIsCaughtAboutHalfTheTime) {

@@ -35,15 +35,20 @@ int listCasesMode(const GradeOptions& options) {
     std::string params;
     for (const auto& [name, value] : c.params) params += name + "=" + value + " ";
     const std::string size = std::to_string(c.width) + "x" + std::to_string(c.height);
-    std::printf("%-30s %-26s %-9s %4u %4d %7s %6s  %s%s%s%s\n", c.id().c_str(), c.scene.c_str(),
+    const std::string noise =
+        c.noiseBound > 0.0 ? formatNumber("(noise at most %gx the reference's) ", c.noiseBound)
+                           : "";
+    std::printf("%-30s %-26s %-9s %4u %4d %7s %6s  %s%s%s%s%s\n", c.id().c_str(), c.scene.c_str(),
                 filterTypeName(c.filter).c_str(), c.spp, c.tileSize, size.c_str(),
                 smallestBias(c, options.references).c_str(), params.c_str(),
-                c.sobol ? "(sobol) " : "", c.courseOnly ? "(course only) " : "", c.purpose.c_str());
+                c.sobol ? "(sobol) " : "", c.courseOnly ? "(course only) " : "", noise.c_str(),
+                c.purpose.c_str());
   }
   std::printf(
       "bias: the smallest relative bias the same everywhere (the image times 1 + b) that "
       "the whole-image test catches in half of the renders as noisy as the reference's "
-      "(a bias in part of the image needs more)\n");
+      "(a bias in part of the image needs more); noise at most: a case that also fails a render "
+      "that much noisier than the reference's (a technique the stage README requires)\n");
   return 0;
 }
 

@@ -235,15 +235,28 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
   if (const Image* wider = layer(pattern::kWiderFilter)) {
     // The filter's width and, beside it, the reference's Laplacian: a profile of another shape
     // moves light at edges as neither does alone.
+    // Which way the fitted difference c0·W + c1·L goes: towards blurring (its overlap with the
+    // Laplacian L > 0, which the wider filter W shares) or sharpening. Said only where it is
+    // clear: one coefficient alone can point the other way when both patterns share the edges.
+    const Vector widerTiles = tileVector(*wider, tiles),
+                 laplacianTiles = tileVector(laplacian, tiles);
+    double widerOnLaplacian = 0.0, laplacianSquared = 0.0;
+    for (size_t k = 0; k < widerTiles.size(); ++k) {
+      widerOnLaplacian += widerTiles[k] * laplacianTiles[k];
+      laplacianSquared += laplacianTiles[k] * laplacianTiles[k];
+    }
     list.push_back({LikelyCause::Edges,
-                    {tileVector(*wider, tiles), tileVector(laplacian, tiles)},
-                    [](const std::vector<double>& c) {
+                    {widerTiles, laplacianTiles},
+                    [widerOnLaplacian, laplacianSquared](const std::vector<double>& c) {
+                      const double blur = c[0] * widerOnLaplacian + c[1] * laplacianSquared;
                       return std::string(
                                  "the differences sit at edges: the filter's profile "
-                                 "has another shape (") +
-                             (c[0] > 0 ? "wider" : "narrower") +
-                             " than it should be, in effect); look at the filter's formula, its "
-                             "radius, and which pixels a sample's splat reaches";
+                                 "has another shape") +
+                             (blur > 0   ? " (wider than it should be, in effect)"
+                              : blur < 0 ? " (narrower than it should be, in effect)"
+                                         : "") +
+                             "; look at the filter's formula, its radius, and which pixels a "
+                             "sample's splat reaches";
                     }});
     list.push_back(
         {LikelyCause::Edges, {tileVector(*wider, tiles)}, [](const std::vector<double>& c) {

@@ -45,6 +45,10 @@ CalibrationResult calibrate(const GradingCase& gradingCase, uint32_t spp, Varian
       result.smallestCloseness = comparison.closeness;
       result.smallestClosenessP = comparison.closenessP;
     }
+    if (i == 0 || comparison.noiseRatio < result.smallestNoiseRatio)
+      result.smallestNoiseRatio = comparison.noiseRatio;
+    result.largestNoiseRatio = std::max(result.largestNoiseRatio, comparison.noiseRatio);
+    result.tooNoisy += comparison.tooNoisy();
     if (!passed) {
       // As the grader does: a failure counts when a render with another seed fails too.
       result.confirmedFailures += !passes(firstSeed + i + kConfirmationSeedOffset, &confirmation);

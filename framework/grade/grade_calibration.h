@@ -26,6 +26,11 @@ struct CalibrationResult {
   // scores about 1), and the chance of an exact image coming that close (the too-close test).
   double smallestCloseness = -1.0;
   double smallestClosenessP = 1.0;
+  // Over all renders: the noise ratio's range (Comparison::noiseRatio; 0 where not measured) and
+  // how many renders were too noisy for the case's required technique (Comparison::tooNoisy).
+  double smallestNoiseRatio = 0.0;
+  double largestNoiseRatio = 0.0;
+  int tooNoisy = 0;
   std::vector<uint64_t> failedSeeds;  // to look at a failure again: pathway grade --seed S
   double seconds = 0.0;               // rendering and grading, references excluded
 };

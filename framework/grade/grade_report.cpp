@@ -297,15 +297,18 @@ std::string gradescopeResults(const GradeSummary& summary, const ComparisonSetti
   Json tests = Json::array();
   for (const CaseResult& c : summary.cases) {
     const char* image = !c.compared ? "none" : c.comparison.passed(settings) ? "pass" : "fail";
-    tests.push_back(
-        {{"name", c.title},
-         {"score", points(c.points)},
-         {"max_score", points(c.maxPoints)},
-         {"status", c.passed ? "passed" : "failed"},
-         {"output", c.describe(settings)},
-         {"visibility", "visible"},
-         {"extra_data",
-          {{"image", image}, {"likely_cause", causeOf(c)}, {"todos", c.todos.size()}}}});
+    tests.push_back({{"name", c.title},
+                     {"score", points(c.points)},
+                     {"max_score", points(c.maxPoints)},
+                     {"status", c.passed ? "passed" : "failed"},
+                     {"output", c.describe(settings)},
+                     {"visibility", "visible"},
+                     {"extra_data",
+                      {{"image", image},
+                       {"likely_cause", causeOf(c)},
+                       {"todos", c.todos.size()},
+                       // 0: not measured (stage 1, or no image to measure)
+                       {"noise_ratio", c.compared ? c.comparison.noiseRatio : 0.0}}}});
   }
   const Json results = {{"score", points(summary.points())},
                         {"execution_time", std::round(summary.seconds * 10.0) / 10.0},

@@ -44,6 +44,11 @@ struct CaseBuilder {
     c.tileSize = size;
     return *this;
   }
+  CaseBuilder& requiresTechnique(double noiseBound, std::string technique) {
+    c.noiseBound = noiseBound;
+    c.requiredTechnique = std::move(technique);
+    return *this;
+  }
 };
 
 }  // namespace pathway

@@ -12,6 +12,17 @@
 namespace pathway {
 namespace {
 
+// The required-technique bounds (GradingCase::noiseBound), measured with `grade --calibrate 1000`
+// (docs/grading-course.md): the reference and every valid variant stay at or below 1.2 times the
+// reference's noise on these cases, a tenth of the bound or less; one AO ray where 128 are asked
+// for reads about 125, always 4 rays about 33, a path tracer without NEE about 10⁵ on the small
+// light and 150 on the Cornell box.
+constexpr double kFewerAoRaysBound = 15.0;
+constexpr double kNoLightSamplingBound = 50.0;
+constexpr const char* kLightSampling =
+    "stage 5 samples the light at every hit (next-event estimation); a path that finds a light "
+    "only by hitting it is far noisier (assignments/stage5/README.md, Required)";
+
 std::vector<GradingCase> declareCases() {
   using B = CaseBuilder;
   const B cases[] = {
@@ -78,6 +89,16 @@ std::vector<GradingCase> declareCases() {
           .param("ao-distance", "2")
           .size(64, 64)
           .spp(8),
+      // Many AO rays per hit: one ray where 128 are asked for is about 128 times as noisy.
+      B(2, "many-rays", "ceiling.gltf", "the number of AO rays per hit the case asks for")
+          .param("ao-rays", "128")
+          .param("ao-distance", "2")
+          .size(64, 64)
+          .spp(8)
+          .requiresTechnique(kFewerAoRaysBound,
+                             "stage 2 averages the ao-rays AO rays per hit that the case asks for "
+                             "(here 128); fewer rays are that much noisier (assignments/stage2/"
+                             "README.md, Required)"),
       B(2, "lights", "grading_lights.gltf", "AO in an open room, background for misses")
           .param("ao-rays", "2")
           .param("ao-distance", "0.5")
@@ -113,14 +134,18 @@ std::vector<GradingCase> declareCases() {
       // offset (measured: caught in 0 of 10 renders at 16 spp, 9 of 10 at 64, 10 of 10 at 128).
       B(5, "cornell-box", "cornell_box.gltf",
         "path tracing with NEE and Russian roulette; ray offsets")
-          .spp(128),
+          .spp(128)
+          .requiresTechnique(kNoLightSamplingBound, kLightSampling),
       B(5, "cornell-box-no-nee", "cornell_box.gltf", "emission found by bounces, counted once")
           .param("nee", "off")
           .spp(64),
-      B(5, "small-light", "small_light.gltf", "NEE towards a small emitter: the area pdf")
+      // Without NEE a path finds this light only by hitting it: hundreds of times the noise.
+      B(5, "small-light", "small_light.gltf",
+        "NEE towards a small emitter: the area pdf, and that the light is sampled at all")
           .param("max-depth", "2")
           .size(64, 64)
-          .spp(16),
+          .spp(16)
+          .requiresTechnique(kNoLightSamplingBound, kLightSampling),
       B(5, "light-touching-wall", "light_touching_wall.gltf",
         "shadow rays that start or end at a contact line")
           .param("max-depth", "3")
@@ -215,6 +240,12 @@ std::vector<const GradingCase*> gradingCasesOf(int stage) {
   if (result.empty())
     throw PathwayError("stage " + std::to_string(stage) + " has no grading cases");
   return result;
+}
+
+const GradingCase* gradingCaseOrNull(const std::string& id) {
+  for (const GradingCase& c : gradingCases())
+    if (c.id() == id) return &c;
+  return nullptr;
 }
 
 const GradingCase& findGradingCase(const std::string& id) {

@@ -39,7 +39,14 @@ struct GradingCase {
   // two (a filter's shape barely changes an 8x8 tile's mean), large where samples are rare
   // events that need many per tile.
   int tileSize = 8;
-  std::string purpose;      // one line: what it is there to catch
+  std::string purpose;  // one line: what it is there to catch
+  // A technique the stage's README requires that changes the noise, not the expectation (stage
+  // 5's light sampling, stage 2's M rays per hit): a render more than noiseBound times as noisy
+  // as the reference's here (both by the jackknife) left it out and fails, with
+  // requiredTechnique as the reason. 0: no bound. The bounds are calibrated: every valid method
+  // stays 10 times below (docs/grading-course.md).
+  double noiseBound = 0.0;
+  std::string requiredTechnique;
   bool courseOnly = false;  // kept by the course: not in a handout (course_cases.cpp)
 
   // Whether a valid submission may be noisier than the reference here, so that its render carries
@@ -75,5 +82,7 @@ std::string courseCasesNotHere(const std::string& referencesFolder);
 std::vector<const GradingCase*> gradingCasesOf(int stage);
 // Throws PathwayError naming the known ids.
 const GradingCase& findGradingCase(const std::string& id);
+// The same, or nullptr (a course case's reference read where its definition is not built in).
+const GradingCase* gradingCaseOrNull(const std::string& id);
 
 }  // namespace pathway

@@ -1,8 +1,11 @@
 #include "grade/grading_reference.h"
 
+#include <algorithm>
+
 #include "core/error.h"
 #include "grade/difference_diagnosis.h"
 #include "grade/difference_patterns.h"
+#include "grade/jackknife_render.h"
 #include "io/image_io.h"
 
 namespace pathway {
@@ -12,11 +15,14 @@ GradingReference makeGradingReference(const GradingCase& gradingCase, const RayT
   std::vector<Image> replicates;
   Image ownVariance;  // the mean of the replicates' own per-pixel variance estimates
   GradingReference reference;
+  const int blockSize = ComparisonSettings().omnibusBlockSize;
+  std::vector<std::vector<Image>> jackknives;  // each replicate's, for its typical noise
   double seconds = 0.0, rays = 0.0;
   for (int i = 0; i < kReferenceReplicates; ++i) {
     const RenderRecipe recipe =
         gradingCase.recipe(Variant::Reference, EarlierStages::Own, kReferenceSeed + i, tracing);
-    RenderResult result = runRender(tracer, recipe);
+    // In batches where a submission's own noise counts: the jackknife is estimated as for theirs.
+    RenderResult result = renderWithJackknife(tracer, recipe, gradingCase.ownNoiseCounts());
     if (result.stats.counters.invalidSamples > 0)
       throw PathwayError(gradingCase.id() + ": the reference dropped " +
                          std::to_string(result.stats.counters.invalidSamples) +
@@ -28,6 +34,14 @@ GradingReference makeGradingReference(const GradingCase& gradingCase, const RayT
       ownVariance = Image(result.images.variance.width, result.images.variance.height);
     for (size_t p = 0; p < ownVariance.pixels.size(); ++p)
       ownVariance.pixels[p] += result.images.variance.pixels[p] / float(kReferenceReplicates);
+    if (!result.images.jackknife.empty()) {
+      const Image own = jackknifeBlockVariance(result.images.jackknife, blockSize);
+      if (reference.jackknifeVariance.pixels.empty())
+        reference.jackknifeVariance = Image(own.width, own.height);
+      for (size_t p = 0; p < own.pixels.size(); ++p)
+        reference.jackknifeVariance.pixels[p] += own.pixels[p] / float(kReferenceReplicates);
+      jackknives.push_back(std::move(result.images.jackknife));
+    }
     replicates.push_back(std::move(result.images.color));
     if (onReplicate) onReplicate(i + 1);
   }
@@ -42,10 +56,18 @@ GradingReference makeGradingReference(const GradingCase& gradingCase, const RayT
       makeDifferencePatterns(gradingCase, tracer, reference.mean, ownVariance, tracing);
   GradingRecord& record = reference.record;
   record.caseId = gradingCase.id();
-  record.blockSize = ComparisonSettings().omnibusBlockSize;
+  record.blockSize = blockSize;
   reference.blockVariance = replicateTileVariance(replicates, record.blockSize);
   record.blockCorrelation = replicateBlockCorrelation(replicates, record.blockSize);
   record.replicates = kReferenceReplicates;
+  // A replicate's typical noise, the median over them: what a submission's is held against.
+  std::vector<double> typical;
+  for (const std::vector<Image>& jackknife : jackknives)
+    typical.push_back(typicalNoise(jackknife, reference.jackknifeVariance, blockSize));
+  if (!typical.empty()) {
+    std::nth_element(typical.begin(), typical.begin() + typical.size() / 2, typical.end());
+    record.typicalNoise = typical[typical.size() / 2];
+  }
   record.tileSize = gradingCase.tileSize;
   record.secondsPerRender = seconds / kReferenceReplicates;
   record.raysPerSecond = seconds > 0.0 ? rays / seconds : 0.0;
@@ -73,6 +95,8 @@ void writeGradingReference(const std::string& path, const GradingReference& refe
   std::map<std::string, const Image*> layers = {{"", &reference.mean},
                                                 {"tileVariance", &reference.tileVariance},
                                                 {"blockVariance", &reference.blockVariance}};
+  if (!reference.jackknifeVariance.pixels.empty())
+    layers["jackknifeVariance"] = &reference.jackknifeVariance;
   for (const auto& [name, image] : reference.patterns) layers[name] = &image;
   writeExrLayers(path, layers, metadata);
 }
@@ -97,6 +121,8 @@ GradingReference gradingReferenceOf(LoadedImage loaded, const std::string& path)
   reference.mean = std::move(loaded.images.color);
   reference.tileVariance = std::move(loaded.layers["tileVariance"]);
   reference.blockVariance = std::move(loaded.layers["blockVariance"]);
+  if (auto jackknife = loaded.layers.find("jackknifeVariance"); jackknife != loaded.layers.end())
+    reference.jackknifeVariance = std::move(jackknife->second);
   for (auto& [name, image] : loaded.layers)
     if (name.rfind(pattern::kPrefix, 0) == 0) reference.patterns[name] = std::move(image);
   reference.metadata = std::move(loaded.metadata);

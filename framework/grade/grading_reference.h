@@ -1,8 +1,8 @@
 // A grading reference: the mean of kReferenceReplicates independent reference renders of one
 // grading case at the submission's spp, and the variance of one such render's tile means (and of
 // its means over the omnibus tests' larger blocks), stored as an EXR (R, G, B = mean;
-// tileVariance.R/G/B; blockVariance.R/G/B; pattern.*.R/G/B) with the settings that made it in its
-// metadata.
+// tileVariance.R/G/B; blockVariance.R/G/B; jackknifeVariance.R/G/B; pattern.*.R/G/B) with the
+// settings that made it in its metadata.
 #pragma once
 
 #include <functional>
@@ -20,6 +20,11 @@ struct GradingReference {
   Image mean;
   Image tileVariance;
   Image blockVariance;  // the same over the omnibus tests' blocks
+  // Where a submission's noise counts (GradingCase::ownNoiseCounts): one replicate's own variance
+  // of a block mean by the jackknife over its batches, averaged over the replicates; what a
+  // submission's jackknife is held against (ComparisonInput::referenceJackknife). Empty in
+  // references made before it.
+  Image jackknifeVariance;
   // The settings the replicates were made with (no seed, path or timing of their own) ...
   RenderMetadata metadata;
   // ... and how the statistics were made: replicates, tile and block size, the blocks'

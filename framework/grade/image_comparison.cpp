@@ -37,7 +37,8 @@ double mean(const Image& image) {
   return image.pixels.empty() ? 0.0 : sum / image.pixels.size();
 }
 
-// The jackknife overestimates the variance of stratified samples somewhat: a note from twice.
+// A render noted as noisier: from twice the reference's (the ratio of two estimates of the same
+// noise spreads about 1 by chance, most on cases with few noisy blocks).
 constexpr double kNotedNoiseRatio = 2.0;
 
 std::string formatNumber(double value) {
@@ -123,12 +124,10 @@ std::vector<OwnVariance> ownVariances(const ComparisonInput& input,
 // The variance of the difference of the means over `b`: the replicates', widened by the render's
 // own where that is larger. `ownPixels` (the tiles): the render's per-pixel estimate, up to
 // ownVarianceCap, with the replicates' degrees of freedom. `ownBlock` (tiles and blocks): the
-// jackknife's estimate, up to ownNoiseCap, with Welch's degrees of freedom. `noise` and
-// `replicateNoise` add up the two estimates where the replicates have noise.
+// jackknife's estimate, up to ownNoiseCap, with Welch's degrees of freedom.
 Unit unitStatistic(const ComparisonInput& input, const ComparisonSettings& settings,
                    double degreesOfFreedom, const TileBounds& b, const Image* replicateVariance,
-                   bool ownPixels, const OwnVariance& ownBlock, double* noise = nullptr,
-                   double* replicateNoise = nullptr) {
+                   bool ownPixels, const OwnVariance& ownBlock) {
   const glm::dvec3 referenceMean = tileMean(*input.reference, b);
   const glm::dvec3 difference = tileMean(*input.image, b) - referenceMean;
   // Differences this small never count, even where the reference has no noise at all.
@@ -154,10 +153,6 @@ Unit unitStatistic(const ComparisonInput& input, const ComparisonSettings& setti
       const glm::dvec3 noiseless = settings.noiselessFraction * glm::abs(referenceMean);
       const glm::dvec3 cap = settings.ownNoiseCap * glm::max(oneRender, noiseless * noiseless);
       for (int c = 0; c < 3; ++c) {
-        if (oneRender[c] > 0.0 && noise) {
-          *noise += ownBlock.variance[c];
-          *replicateNoise += oneRender[c];
-        }
         const double meanNoise = oneRender[c] / replicates;
         // The neighbourhood's noise ratio widens the replicates' variance (stable: many degrees
         // of freedom) ...
@@ -190,6 +185,16 @@ Unit unitStatistic(const ComparisonInput& input, const ComparisonSettings& setti
   return unit;
 }
 
+// The note's noise ratio, like for like: the render's typical noise over a reference render's
+// (the reference's jackknife is kept in the omnibus blocks' units).
+void measureNoiseRatio(const ComparisonInput& input, int blockSize, Comparison& result) {
+  if (!input.referenceJackknife || !(input.referenceTypicalNoise > 0.0) || !input.jackknife ||
+      input.jackknife->size() < 2)
+    return;
+  result.noiseRatio = typicalNoise(*input.jackknife, *input.referenceJackknife, blockSize) /
+                      input.referenceTypicalNoise;
+}
+
 // Test 4 (image_comparison.h): how close the image is to the reference, against an exact image.
 void measureCloseness(const ComparisonInput& input, const std::vector<TileBounds>& blockBounds,
                       bool blocks, Comparison& result) {
@@ -216,7 +221,7 @@ void measureCloseness(const ComparisonInput& input, const std::vector<TileBounds
 
 bool Comparison::passed(const ComparisonSettings& settings) const {
   return hardFailures.empty() && worstTileP >= settings.tileAlpha &&
-         omnibusP >= settings.omnibusAlpha && !tooClose(settings);
+         omnibusP >= settings.omnibusAlpha && !tooClose(settings) && !tooNoisy();
 }
 
 std::string Comparison::describe(const ComparisonSettings& settings) const {
@@ -235,9 +240,15 @@ std::string Comparison::describe(const ComparisonSettings& settings) const {
   out << "whole image: omnibus " << formatP(omnibusP) << " (fails below "
       << formatNumber(settings.omnibusAlpha) << "); mean differs from the reference by "
       << formatNumber(100.0 * meanRelativeDifference) << "%\n";
-  if (noiseRatio >= kNotedNoiseRatio)
+  if (tooNoisy())
     out << "your render is " << formatNumber(noiseRatio)
-        << " times as noisy as the reference's (variance, by the jackknife): "
+        << " times as noisy as the reference's (both by the jackknife over their sample "
+           "batches); this case allows at most "
+        << formatNumber(noiseBound) << " times: " << requiredTechnique << "\n";
+  else if (noiseRatio >= kNotedNoiseRatio)
+    out << "your render is " << formatNumber(noiseRatio)
+        << " times as noisy as the reference's (both by the jackknife over their sample "
+           "batches): "
         << (noiseRatio < settings.ownNoiseCap
                 ? "a valid method may be; the whole-image tests allow for it"
                 : "the whole-image tests allow for no more than " +
@@ -326,7 +337,6 @@ Comparison compareImages(const ComparisonInput& input, const ComparisonSettings&
   const int blockSize = blocks ? settings.omnibusBlockSize : settings.tileSize;
   const std::vector<TileBounds> blockBounds = tilesOf(image.width, image.height, blockSize);
   glm::dvec3 sumZ(0.0), sumZ2(0.0);
-  double noise = 0.0, replicateNoise = 0.0;
   const Image* blockReplicateVariance =
       replicated && blocks ? input.blockVariance : input.tileVariance;
   const std::vector<OwnVariance> ownBlocks =
@@ -334,9 +344,8 @@ Comparison compareImages(const ComparisonInput& input, const ComparisonSettings&
                  : std::vector<OwnVariance>(blockBounds.size());
   for (size_t i = 0; i < blockBounds.size(); ++i) {
     const TileBounds& b = blockBounds[i];
-    const Unit unit =
-        unitStatistic(input, settings, result.degreesOfFreedom, b, blockReplicateVariance, false,
-                      ownBlocks[i], &noise, &replicateNoise);
+    const Unit unit = unitStatistic(input, settings, result.degreesOfFreedom, b,
+                                    blockReplicateVariance, false, ownBlocks[i]);
     const glm::dvec3 z = glm::clamp(unit.z, -settings.omnibusClamp, settings.omnibusClamp);
     TileVerdict block{b.x0, b.y0, b.x1, b.y1};
     block.z = Color(z);
@@ -353,7 +362,9 @@ Comparison compareImages(const ComparisonInput& input, const ComparisonSettings&
     smallestOmnibus = std::min({smallestOmnibus, result.chiSquaredP[c], result.meanShiftP[c]});
   }
   result.omnibusP = std::min(1.0, 6.0 * smallestOmnibus);
-  if (replicateNoise > 0.0) result.noiseRatio = noise / replicateNoise;
+  measureNoiseRatio(input, settings.omnibusBlockSize, result);
+  result.noiseBound = input.noiseBound;
+  result.requiredTechnique = input.requiredTechnique;
   if (replicated) measureCloseness(input, blockBounds, blocks, result);
   const double referenceMean = mean(reference);
   result.meanRelativeDifference =
@@ -411,6 +422,34 @@ double smallestDetectableBias(const Image& mean, const Image& blockVariance, int
 double filterPixelCorrelation(double filterRadius) {
   const double reach = std::max(1.0, 2.0 * filterRadius);
   return reach * reach;
+}
+
+Image jackknifeBlockVariance(const std::vector<Image>& jackknife, int blockSize) {
+  const Image& first = jackknife.front();
+  Image result(first.width, first.height);
+  for (const TileBounds& b : tilesOf(first.width, first.height, blockSize)) {
+    const Color variance(jackknifeVariance(jackknife, b));
+    for (int y = b.y0; y < b.y1; ++y)
+      for (int x = b.x0; x < b.x1; ++x) result.at(x, y) = variance;
+  }
+  return result;
+}
+
+double typicalNoise(const std::vector<Image>& jackknife, const Image& referenceJackknife,
+                    int blockSize) {
+  std::vector<double> ratios;
+  for (const TileBounds& b :
+       tilesOf(referenceJackknife.width, referenceJackknife.height, blockSize)) {
+    const glm::dvec3 theirs(referenceJackknife.at(b.x0, b.y0));
+    const double reference = theirs.x + theirs.y + theirs.z;
+    if (!(reference > 0.0)) continue;
+    const glm::dvec3 mine = jackknifeVariance(jackknife, b);
+    ratios.push_back((mine.x + mine.y + mine.z) / reference);
+  }
+  if (ratios.empty()) return 0.0;
+  const auto middle = ratios.begin() + ratios.size() / 2;
+  std::nth_element(ratios.begin(), middle, ratios.end());
+  return *middle;
 }
 
 Image replicateTileVariance(const std::vector<Image>& replicates, int tileSize) {

@@ -19,8 +19,9 @@
 //      (the reference is a mean of R renders, not the truth). Far below it, the image copies the
 //      reference: the chance of an exact image coming that close (a weighted χ², Satterthwaite's
 //      degrees of freedom) below tooCloseAlpha fails it. Honest renders, noisy, sit above 1.
-// The image passes when no hard check fails, neither family-wise p is below its α, and it is not
-// too close.
+// The image passes when no hard check fails, neither family-wise p is below its α, it is not
+// too close, and, where the case requires a technique that lowers the noise, it is not far
+// noisier than the reference's (both by the jackknife).
 #pragma once
 
 #include <cstdint>
@@ -75,6 +76,16 @@ struct ComparisonInput {
   // of tile and block means (nullptr or fewer than two: the replicates' alone).
   const std::vector<Image>* jackknife = nullptr;
   const Image* referenceVariance = nullptr;  // per pixel, when tileVariance is absent
+  // With replicates: one reference render's variance of a block's mean by the jackknife over as
+  // many batches as the render's (constant over each block), so that the noise note compares
+  // like with like (nullptr: no note). Low-discrepancy samples make both estimates too large.
+  const Image* referenceJackknife = nullptr;
+  double referenceTypicalNoise = 0.0;  // a reference render's typicalNoise (its record)
+  // Where the stage requires a technique that lowers the noise but not the expectation (stage
+  // 5's light sampling): the most times as noisy as the reference's a render may be (0: no
+  // bound), and what a render past it left out, in words for the student.
+  double noiseBound = 0.0;
+  std::string requiredTechnique;
   // Var(Σ z) / blocks over the replicates: above 1 where a wide filter correlates neighbouring
   // blocks. The mean-shift test divides by it.
   glm::dvec3 blockCorrelation{1.0};
@@ -112,10 +123,12 @@ struct Comparison {
   double meanShiftP[3] = {1, 1, 1};     // per channel, Σ z / sqrt(tiles) ~ N(0, 1)
   double omnibusP = 1.0;                // family-wise (Bonferroni over the six)
   double meanRelativeDifference = 0.0;  // (mean image - mean reference) / mean reference
-  // The render's own variance over the replicates' (Σ over blocks and channels where the
-  // replicates have noise; 0: not measured): a note for a student whose method is valid but
-  // noisier, and a warning when it reaches the cap.
+  // The render's typicalNoise over a reference render's (both by the jackknife; 0: not
+  // measured): a note for a student whose method is valid but noisier, a warning when it
+  // reaches the cap, and a failure past the case's noiseBound.
   double noiseRatio = 0.0;
+  double noiseBound = 0.0;        // from the input
+  std::string requiredTechnique;  // from the input
   // Test 4: Σ d² / Σ Var(reference mean) over the blocks (about 1 for an exact image, more for a
   // render; < 0: not measured, without replicates or noise), and P(an exact image <= it).
   double closeness = -1.0;
@@ -124,6 +137,8 @@ struct Comparison {
   bool tooClose(const ComparisonSettings& settings) const {
     return closenessP < settings.tooCloseAlpha;
   }
+  // A required technique left out: far noisier than any valid method (ComparisonInput).
+  bool tooNoisy() const { return noiseBound > 0.0 && noiseRatio > noiseBound; }
   bool passed(const ComparisonSettings& settings) const;
   // A few lines for a person: the hard failures, or the numbers of the statistical tests.
   std::string describe(const ComparisonSettings& settings) const;
@@ -135,6 +150,16 @@ Comparison compareImages(const ComparisonInput& input, const ComparisonSettings&
 // Per tile and channel: the variance of one render's tile mean over `replicates` images
 // (each the same size), constant over each tile's pixels. Used to make references.
 Image replicateTileVariance(const std::vector<Image>& replicates, int tileSize);
+// Per block and channel: one render's own variance of the block mean by the jackknife over its
+// batch images (grade/jackknife_render.h), constant over each block's pixels.
+Image jackknifeBlockVariance(const std::vector<Image>& jackknife, int blockSize);
+// How noisy one render typically is against a reference: the median, over the blocks where
+// `referenceJackknife` (a grading reference's jackknifeVariance) has noise, of the render's
+// jackknife variance of the block mean over the reference's, channels summed. A median, not a sum:
+// rare huge samples (a small light found by a bounce, a firefly) would make a sum swing tenfold
+// between renders of one stage. 0 without blocks that have noise.
+double typicalNoise(const std::vector<Image>& jackknife, const Image& referenceJackknife,
+                    int blockSize);
 // Var(Σ_blocks (m - mean) / sd) / blocks over the replicates, per channel (see blockCorrelation).
 glm::dvec3 replicateBlockCorrelation(const std::vector<Image>& replicates, int blockSize);
 

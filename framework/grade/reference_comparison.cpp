@@ -27,6 +27,13 @@ Comparison compareWithReference(const FilmImages& render, const RenderMetadata& 
     input.blockCorrelation = grading->record.blockCorrelation;
     input.replicates = grading->record.replicates;
     if (!render.jackknife.empty()) input.jackknife = &render.jackknife;
+    if (!grading->jackknifeVariance.pixels.empty())
+      input.referenceJackknife = &grading->jackknifeVariance;
+    input.referenceTypicalNoise = grading->record.typicalNoise;
+    if (const GradingCase* gradingCase = gradingCaseOrNull(grading->record.caseId)) {
+      input.noiseBound = gradingCase->noiseBound;
+      input.requiredTechnique = gradingCase->requiredTechnique;
+    }
   } else {
     if (!reference.variance_->pixels.empty()) input.referenceVariance = reference.variance_;
     if (!input.imageVariance && !input.referenceVariance)

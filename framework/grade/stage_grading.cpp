@@ -257,6 +257,17 @@ void judgeAgainstReference(CaseResult& result, const LoadedImage& render,
         usedNextEventEstimation(render.metadata.stage, render.metadata.params);
     for (const auto& [name, image] : reference.patterns) input.patterns[name] = &image;
     result.diagnosis = diagnoseDifference(input, result.comparison, settings);
+    // Far noisier than any valid method: unless the difference has a pattern of its own (a
+    // missing cosine is both wrong and noisier), the case names the technique left out. Noise
+    // that far past the whole-image tests' allowance fails them too, and no pattern explains it.
+    const Comparison& c = result.comparison;
+    const bool meanAgrees =
+        c.worstTileP >= settings.tileAlpha && c.omnibusP >= settings.omnibusAlpha;
+    const LikelyCause cause = result.diagnosis->cause;
+    const bool noPattern =
+        cause == LikelyCause::Unknown || cause == LikelyCause::Noise || cause == LikelyCause::Local;
+    if (c.tooNoisy() && (meanAgrees || noPattern))
+      result.diagnosis = Diagnosis{LikelyCause::Noise, 1.0, result.comparison.requiredTechnique};
   }
   if (!result.todos.empty()) {
     // A placeholder can be right by chance (the box filter's is); unfinished work never passes.

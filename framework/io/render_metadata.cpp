@@ -84,6 +84,11 @@ std::vector<std::pair<std::string, std::string>> keyedText(const RenderMetadata&
     std::snprintf(correlation, sizeof correlation, "%.9g %.9g %.9g", g->blockCorrelation.x,
                   g->blockCorrelation.y, g->blockCorrelation.z);
     put("grading:blockCorrelation", correlation);
+    if (g->typicalNoise > 0.0) {
+      char typical[32];
+      std::snprintf(typical, sizeof typical, "%.9g", g->typicalNoise);
+      put("grading:typicalNoise", typical);
+    }
     put("grading:secondsPerRender", std::to_string(g->secondsPerRender));
     put("grading:raysPerSecond", std::to_string(g->raysPerSecond));
   }
@@ -216,6 +221,7 @@ RenderMetadata readMetadataAttributes(
     std::istringstream correlation(in.text("grading:blockCorrelation"));
     if (!(correlation >> g.blockCorrelation.x >> g.blockCorrelation.y >> g.blockCorrelation.z))
       in.fail("grading:blockCorrelation", "is not three numbers");
+    g.typicalNoise = in.number<double>("grading:typicalNoise");
     g.secondsPerRender = in.required<double>("grading:secondsPerRender");
     g.raysPerSecond = in.required<double>("grading:raysPerSecond");
     m.grading = g;

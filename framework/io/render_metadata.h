@@ -29,6 +29,9 @@ struct GradingRecord {
   int tileSize = 0;
   int blockSize = 0;
   glm::dvec3 blockCorrelation{1.0};
+  // A replicate's typical noise by the jackknife (grade/image_comparison.h, typicalNoise), the
+  // median over the replicates: what a submission's is divided by. 0: not made.
+  double typicalNoise = 0.0;
   double secondsPerRender = 0.0;  // of one replicate
   double raysPerSecond = 0.0;
 };

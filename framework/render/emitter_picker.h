@@ -3,11 +3,14 @@
 // the stage's own work.
 #pragma once
 
+#include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include "sampling/discrete_distribution.h"
 #include "scene/emitters.h"
 #include "scene/scene.h"
+#include "scene/surface_hit.h"
 
 namespace pathway {
 
@@ -37,10 +40,21 @@ class EmitterPicker {
     const size_t index = distribution_.sample(u);
     return {&emitters_[index], distribution_.probability(index)};
   }
+  // The triangle `hit` lies on as pick() would choose it, with the same probability ({nullptr,
+  // 0} where it emits nothing): what multiple importance sampling needs to weigh light a bounce
+  // ray found against the light sample that could have found it (density per area:
+  // probability / emitter->area).
+  Pick pickOf(const SurfaceHit& hit) const;
+
+ private:
+  static uint64_t key(uint32_t mesh, uint32_t triangle) {
+    return (uint64_t(mesh) << 32) | triangle;
+  }
 
  private:
   std::vector<EmissiveTriangle> emitters_;
   DiscreteDistribution distribution_;
+  std::unordered_map<uint64_t, size_t> indexOf_;  // by key(mesh, triangle)
 };
 
 }  // namespace pathway

@@ -88,6 +88,9 @@
 //     struct Pick { const EmissiveTriangle* emitter; float probability; };  // of this triangle
 //     bool empty() const;        // no emitter can emit power
 //     Pick pick(float u) const;  // u in [0, 1); not to be called when empty()
+//     // The triangle `hit` lies on as pick() chooses it ({nullptr, 0}: it emits nothing), for
+//     // multiple importance sampling of light a bounce ray found:
+//     Pick pickOf(const SurfaceHit& hit) const;
 //   };
 //   struct EmissiveTriangle {
 //     Vec3 p0, p1, p2;

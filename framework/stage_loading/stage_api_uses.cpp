@@ -39,6 +39,8 @@ Color useEveryStageApiFunction(const Ray& ray, SampleStream& samples, const Rend
   for (EmitterWeighting weighting : {EmitterWeighting::Area, EmitterWeighting::Power}) {
     const EmitterPicker picker(scene, weighting);
     if (!picker.empty()) sum *= picker.pick(0.5f).probability;
+    if (const std::optional<SurfaceHit> hit = context.intersect(ray, RayKind::Secondary))
+      sum *= picker.pickOf(*hit).probability;
   }
   registerStage<HandingOn>(stage1(), Stage1Functions{});
   registerStage<HandingOn>(stage2(), Stage2Functions{});

@@ -431,3 +431,83 @@ class PathTracer : public Integrator {"
   TO "const float pdf = local.z > 0.0f ? local.z * kInvPi : 0.0f"
   FROM "hit.spawnRay(Frame(hit.normal).toWorld(local))"
   TO "hit.spawnRay(gramSchmidtToWorld(hit.normal, local))")
+
+# Multiple importance sampling (balance heuristic) of NEE and the emission a bounce ray finds:
+# a path that reaches an emitter can come from either strategy, with densities per solid angle
+# p_L = p_A d² / |cos_y| (the light sample) and p_B = cos_x / π (the cosine continuation); weights
+# p_L / (p_L + p_B) and p_B / (p_L + p_B) add up to one for each path, so each light path is
+# counted once. The emitter's pick probability comes from lights.pickOf(hit). The wavefront
+# version (the reference's alone) is left out of this file.
+pathway_mutant(v_s5_mis 5 stage5/stage5_path_tracing.cpp pass "multiple importance sampling of NEE and bounce emission (balance heuristic), with lights.pickOf"
+  FROM "// The wavefront version, \"stage5@fast\""
+  TO "#if 0  // this variant has no wavefront version
+// The wavefront version, \"stage5@fast\""
+  FROM "}  // namespace
+}  // namespace pathway"
+  TO "#endif
+}  // namespace
+}  // namespace pathway"
+  FROM "Ray ray = cameraRay"
+  TO "Vec3 previousNormal(0.0f)@SEMICOLON@
+    Ray ray = cameraRay"
+  FROM "if (addEmission) radiance += throughput * hit->emitted"
+  TO "if (addEmission)
+        radiance += throughput * hit->emitted@SEMICOLON@
+      else
+        radiance += throughput * hit->emitted * bounceWeight(*hit, ray, previousNormal)"
+  FROM "ray = *next"
+  TO "previousNormal = hit->normal@SEMICOLON@
+      ray = *next"
+  FROM "return DirectLight{shadowRay, light.emitter->emission * brdf * geometry / light.pdfArea}"
+  TO "const float pLight = light.pdfArea * distanceSquared / std::fabs(cosLight)@SEMICOLON@
+    const float pBounce = cosSurface * kInvPi@SEMICOLON@
+    return DirectLight{shadowRay, light.emitter->emission * brdf * geometry / light.pdfArea *
+                                      (pLight / (pLight + pBounce))}"
+  FROM "  // Light arriving at `hit` straight from a point picked on the emitters, times the BRDF."
+  TO "  // The balance heuristic's weight of emission that the ray from a hit with `previousNormal`
+  // found at `hit`: p_B / (p_B + p_L), both per solid angle.
+  float bounceWeight(const SurfaceHit& hit, const Ray& ray, const Vec3& previousNormal) const {
+    const EmitterPicker::Pick pick = lights_.pickOf(hit)@SEMICOLON@
+    if (!pick.emitter || pick.probability <= 0.0f) return 1.0f@SEMICOLON@  // NEE cannot find it
+    const float length = glm::length(ray.direction)@SEMICOLON@
+    const float distance = hit.distance * length@SEMICOLON@
+    const float cosLight = std::fabs(glm::dot(hit.normal, ray.direction)) / length@SEMICOLON@
+    const float cosBounce = std::fmax(0.0f, glm::dot(previousNormal, ray.direction) / length)@SEMICOLON@
+    const float pBounce = cosBounce * kInvPi@SEMICOLON@
+    const float pLight = pick.probability / pick.emitter->area * distance * distance / cosLight@SEMICOLON@
+    return pBounce / (pBounce + pLight)@SEMICOLON@
+  }
+
+  // Light arriving at `hit` straight from a point picked on the emitters, times the BRDF.")
+
+# Every emitting triangle equally likely, whatever light-pick says: a point on triangle k has
+# density 1 / (count · area_k), its true density, so NEE stays unbiased (noisier where the
+# emitters' power per area differs). light-pick only chooses the reference's rule.
+pathway_mutant(v_s5_uniform_pick 5 stage5/stage5_path_tracing.cpp pass "emitters picked uniformly (1/count each), light-pick ignored, with that probability"
+  FROM "class PathTracer : public Integrator {"
+  TO "LightSample sampleUniformPick(const std::vector<EmissiveTriangle>& triangles, float uPick,
+                              Vec2 uPoint) {
+  const size_t count = triangles.size()@SEMICOLON@
+  const size_t index = std::min(count - 1, static_cast<size_t>(uPick * static_cast<float>(count)))@SEMICOLON@
+  const EmissiveTriangle& e = triangles[index]@SEMICOLON@
+  const float s = std::sqrt(uPoint.x)@SEMICOLON@
+  const float b0 = 1.0f - s, b1 = uPoint.y * s@SEMICOLON@
+  LightSample light@SEMICOLON@
+  light.position = b0 * e.p0 + b1 * e.p1 + (1.0f - b0 - b1) * e.p2@SEMICOLON@
+  light.normal = e.normal@SEMICOLON@
+  light.emitter = &e@SEMICOLON@
+  light.pdfArea = 1.0f / (static_cast<float>(count) * e.area)@SEMICOLON@
+  return light@SEMICOLON@
+}
+
+class PathTracer : public Integrator {"
+  FROM "LightSample sampleLight(const EmitterPicker& lights"
+  TO "[[maybe_unused]] LightSample sampleLight(const EmitterPicker& lights"
+  FROM "lights_(setup.scene, setup.params.lightPick),"
+  TO "lights_(setup.scene, setup.params.lightPick),
+        triangles_(collectEmissiveTriangles(setup.scene)),"
+  FROM "EmitterPicker lights_"
+  TO "EmitterPicker lights_@SEMICOLON@
+  std::vector<EmissiveTriangle> triangles_"
+  FROM "const LightSample light = sampleLight(lights_, uPick, uPoint)"
+  TO "const LightSample light = sampleUniformPick(triangles_, uPick, uPoint)")
