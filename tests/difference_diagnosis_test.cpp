@@ -98,6 +98,20 @@ class Diagnosis : public ::testing::Test {
     return diagnoseDifference(input, comparison, settings);
   }
 
+  // The scene blurred: each pixel the mean of its four neighbours, itself counted twice.
+  Image blurred() const {
+    Image result = truth_;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        Color sum(0.0f);
+        for (int d = -1; d <= 1; ++d)
+          sum += truth_.at(std::clamp(x + d, 0, kSize - 1), y) +
+                 truth_.at(x, std::clamp(y + d, 0, kSize - 1));
+        result.at(x, y) = sum / 6.0f;
+      }
+    return result;
+  }
+
   Image truth_, mean_, tileVariance_, direct_;
   std::map<std::string, const Image*> patterns_;  // more stored patterns, by name
 };
@@ -117,16 +131,7 @@ TEST_F(Diagnosis, AHalfPixelMoveIsShift) {
 }
 
 TEST_F(Diagnosis, ABlurIsEdges) {
-  Image blurred = truth_;
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) {
-      Color sum(0.0f);
-      for (int d = -1; d <= 1; ++d)
-        sum += truth_.at(std::clamp(x + d, 0, kSize - 1), y) +
-               truth_.at(x, std::clamp(y + d, 0, kSize - 1));
-      blurred.at(x, y) = sum / 6.0f;
-    }
-  const pathway::Diagnosis d = diagnose(withNoise(blurred, 7));
+  const pathway::Diagnosis d = diagnose(withNoise(blurred(), 7));
   EXPECT_EQ(d.cause, LikelyCause::Edges) << d.line();
   EXPECT_NE(d.explanation.find("blurrier"), std::string::npos) << d.line();
 }
@@ -206,18 +211,12 @@ int widthDirection(const std::string& text) {
 TEST_F(Diagnosis, EdgesSayWiderOrNarrowerAsMeasured) {
   // A filter's width as the stage 1 references store it: the image through a wider filter minus
   // a narrower one (here the scene blurred minus the scene sharpened, over each other's edges).
-  Image blurred = truth_, sharpened = truth_;
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) {
-      Color sum(0.0f);
-      for (int d = -1; d <= 1; ++d)
-        sum += truth_.at(std::clamp(x + d, 0, kSize - 1), y) +
-               truth_.at(x, std::clamp(y + d, 0, kSize - 1));
-      blurred.at(x, y) = sum / 6.0f;
-      sharpened.at(x, y) = truth_.at(x, y) + 0.5f * (truth_.at(x, y) - blurred.at(x, y));
-    }
-  Image wider = blurred;
-  for (size_t p = 0; p < wider.pixels.size(); ++p) wider.pixels[p] -= sharpened.pixels[p];
+  const Image blur = blurred();
+  Image wider = blur;
+  for (size_t p = 0; p < wider.pixels.size(); ++p) {
+    const Color sharpened = truth_.pixels[p] + 0.5f * (truth_.pixels[p] - blur.pixels[p]);
+    wider.pixels[p] -= sharpened;
+  }
   for (const bool withWidth : {false, true}) {
     if (withWidth) patterns_[pattern::kWiderFilter] = &wider;
     for (const float a : {-0.6f, 0.6f}) {
