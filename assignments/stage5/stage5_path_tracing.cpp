@@ -9,6 +9,7 @@
 //    emitters. Direct light then no longer depends on a random bounce happening to hit a small
 //    light. Because the emitters are now sampled explicitly, emission found by a bounce ray is NOT
 //    added again (that would count direct light twice); only emission seen by the camera ray is.
+//    (Multiple importance sampling adds both, weighted to sum to one: README, Yours to choose.)
 //  - Russian roulette: after a few bounces a path survives with probability q and its weight is
 //    divided by q. The expected value is unchanged, and paths end without a hard depth cut.
 //
