@@ -260,7 +260,8 @@ ReferenceNoise referenceNoise(const Reference& reference) {
   ReferenceNoise noise{reference.tileVariance};
   std::vector<double> typical;
   for (uint64_t seed = 500; seed < 515; ++seed)
-    typical.push_back(typicalNoise(batchedRender(seed, 1.0, 0.0).jackknife, noise.jackknife, 8));
+    typical.push_back(typicalNoise(
+        jackknifeBlockVariance(batchedRender(seed, 1.0, 0.0).jackknife, 8), noise.jackknife, 8));
   std::nth_element(typical.begin(), typical.begin() + 7, typical.end());
   noise.typical = typical[7];
   return noise;

@@ -60,13 +60,8 @@ Image escapedBackground(const GradingCase& gradingCase, const RayTracer& tracer)
 
 // Every tile's pixels replaced by the tile's mean: how the patterns are stored.
 Image tileAveraged(const Image& image, int tileSize) {
-  Image result(image.width, image.height);
-  for (const TileBounds& t : tilesOf(image.width, image.height, tileSize)) {
-    const Color mean(tileMean(image, t));
-    for (int y = t.y0; y < t.y1; ++y)
-      for (int x = t.x0; x < t.x1; ++x) result.at(x, y) = mean;
-  }
-  return result;
+  return constantOverTiles(image.width, image.height, tileSize,
+                           [&](const TileBounds& t) { return tileMean(image, t); });
 }
 
 }  // namespace

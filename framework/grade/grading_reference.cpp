@@ -16,7 +16,8 @@ GradingReference makeGradingReference(const GradingCase& gradingCase, const RayT
   Image ownVariance;  // the mean of the replicates' own per-pixel variance estimates
   GradingReference reference;
   const int blockSize = ComparisonSettings().omnibusBlockSize;
-  std::vector<std::vector<Image>> jackknives;  // each replicate's, for its typical noise
+  std::vector<Image>
+      ownJackknives;  // each replicate's jackknifeBlockVariance, for its typical noise
   double seconds = 0.0, rays = 0.0;
   for (int i = 0; i < kReferenceReplicates; ++i) {
     const RenderRecipe recipe =
@@ -40,7 +41,7 @@ GradingReference makeGradingReference(const GradingCase& gradingCase, const RayT
         reference.jackknifeVariance = Image(own.width, own.height);
       for (size_t p = 0; p < own.pixels.size(); ++p)
         reference.jackknifeVariance.pixels[p] += own.pixels[p] / float(kReferenceReplicates);
-      jackknives.push_back(std::move(result.images.jackknife));
+      ownJackknives.push_back(own);
     }
     replicates.push_back(std::move(result.images.color));
     if (onReplicate) onReplicate(i + 1);
@@ -62,8 +63,8 @@ GradingReference makeGradingReference(const GradingCase& gradingCase, const RayT
   record.replicates = kReferenceReplicates;
   // A replicate's typical noise, the median over them: what a submission's is held against.
   std::vector<double> typical;
-  for (const std::vector<Image>& jackknife : jackknives)
-    typical.push_back(typicalNoise(jackknife, reference.jackknifeVariance, blockSize));
+  for (const Image& own : ownJackknives)
+    typical.push_back(typicalNoise(own, reference.jackknifeVariance, blockSize));
   if (!typical.empty()) {
     std::nth_element(typical.begin(), typical.begin() + typical.size() / 2, typical.end());
     record.typicalNoise = typical[typical.size() / 2];

@@ -17,6 +17,17 @@ std::vector<TileBounds> tilesOf(int width, int height, int tileSize) {
   return tiles;
 }
 
+Image constantOverTiles(int width, int height, int tileSize,
+                        const std::function<glm::dvec3(const TileBounds&)>& value) {
+  Image result(width, height);
+  for (const TileBounds& t : tilesOf(width, height, tileSize)) {
+    const Color constant(value(t));
+    for (int y = t.y0; y < t.y1; ++y)
+      for (int x = t.x0; x < t.x1; ++x) result.at(x, y) = constant;
+  }
+  return result;
+}
+
 glm::dvec3 tileMean(const Image& image, const TileBounds& t) {
   glm::dvec3 sum(0.0);
   for (int y = t.y0; y < t.y1; ++y)
@@ -191,8 +202,9 @@ void measureNoiseRatio(const ComparisonInput& input, int blockSize, Comparison& 
   if (!input.referenceJackknife || !(input.referenceTypicalNoise > 0.0) || !input.jackknife ||
       input.jackknife->size() < 2)
     return;
-  result.noiseRatio = typicalNoise(*input.jackknife, *input.referenceJackknife, blockSize) /
-                      input.referenceTypicalNoise;
+  const Image own = jackknifeBlockVariance(*input.jackknife, blockSize);
+  result.noiseRatio =
+      typicalNoise(own, *input.referenceJackknife, blockSize) / input.referenceTypicalNoise;
 }
 
 // Test 4 (image_comparison.h): how close the image is to the reference, against an exact image.
@@ -220,8 +232,7 @@ void measureCloseness(const ComparisonInput& input, const std::vector<TileBounds
 }  // namespace
 
 bool Comparison::passed(const ComparisonSettings& settings) const {
-  return hardFailures.empty() && worstTileP >= settings.tileAlpha &&
-         omnibusP >= settings.omnibusAlpha && !tooClose(settings) && !tooNoisy();
+  return meanAgrees(settings) && !tooClose(settings) && !tooNoisy();
 }
 
 std::string Comparison::describe(const ComparisonSettings& settings) const {
@@ -426,24 +437,18 @@ double filterPixelCorrelation(double filterRadius) {
 
 Image jackknifeBlockVariance(const std::vector<Image>& jackknife, int blockSize) {
   const Image& first = jackknife.front();
-  Image result(first.width, first.height);
-  for (const TileBounds& b : tilesOf(first.width, first.height, blockSize)) {
-    const Color variance(jackknifeVariance(jackknife, b));
-    for (int y = b.y0; y < b.y1; ++y)
-      for (int x = b.x0; x < b.x1; ++x) result.at(x, y) = variance;
-  }
-  return result;
+  return constantOverTiles(first.width, first.height, blockSize,
+                           [&](const TileBounds& b) { return jackknifeVariance(jackknife, b); });
 }
 
-double typicalNoise(const std::vector<Image>& jackknife, const Image& referenceJackknife,
-                    int blockSize) {
+double typicalNoise(const Image& ownJackknife, const Image& referenceJackknife, int blockSize) {
   std::vector<double> ratios;
   for (const TileBounds& b :
        tilesOf(referenceJackknife.width, referenceJackknife.height, blockSize)) {
     const glm::dvec3 theirs(referenceJackknife.at(b.x0, b.y0));
     const double reference = theirs.x + theirs.y + theirs.z;
     if (!(reference > 0.0)) continue;
-    const glm::dvec3 mine = jackknifeVariance(jackknife, b);
+    const glm::dvec3 mine(ownJackknife.at(b.x0, b.y0));
     ratios.push_back((mine.x + mine.y + mine.z) / reference);
   }
   if (ratios.empty()) return 0.0;
@@ -454,20 +459,16 @@ double typicalNoise(const std::vector<Image>& jackknife, const Image& referenceJ
 
 Image replicateTileVariance(const std::vector<Image>& replicates, int tileSize) {
   const Image& first = replicates.front();
-  Image result(first.width, first.height);
   const double count = static_cast<double>(replicates.size());
-  for (const TileBounds& b : tilesOf(first.width, first.height, tileSize)) {
+  return constantOverTiles(first.width, first.height, tileSize, [&](const TileBounds& b) {
     std::vector<glm::dvec3> means;
     glm::dvec3 sum(0.0);
     for (const Image& replicate : replicates) sum += means.emplace_back(tileMean(replicate, b));
     const glm::dvec3 average = sum / count;
     glm::dvec3 squares(0.0);  // two passes: no cancellation when the variance is tiny
     for (const glm::dvec3& m : means) squares += (m - average) * (m - average);
-    const glm::dvec3 variance = squares / (count - 1.0);
-    for (int y = b.y0; y < b.y1; ++y)
-      for (int x = b.x0; x < b.x1; ++x) result.at(x, y) = Color(variance);
-  }
-  return result;
+    return squares / (count - 1.0);
+  });
 }
 
 }  // namespace pathway

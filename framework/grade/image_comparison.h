@@ -25,6 +25,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -139,6 +140,11 @@ struct Comparison {
   }
   // A required technique left out: far noisier than any valid method (ComparisonInput).
   bool tooNoisy() const { return noiseBound > 0.0 && noiseRatio > noiseBound; }
+  // The expectation's tests: no hard failure, and neither family-wise p below its α.
+  bool meanAgrees(const ComparisonSettings& settings) const {
+    return hardFailures.empty() && worstTileP >= settings.tileAlpha &&
+           omnibusP >= settings.omnibusAlpha;
+  }
   bool passed(const ComparisonSettings& settings) const;
   // A few lines for a person: the hard failures, or the numbers of the statistical tests.
   std::string describe(const ComparisonSettings& settings) const;
@@ -155,11 +161,11 @@ Image replicateTileVariance(const std::vector<Image>& replicates, int tileSize);
 Image jackknifeBlockVariance(const std::vector<Image>& jackknife, int blockSize);
 // How noisy one render typically is against a reference: the median, over the blocks where
 // `referenceJackknife` (a grading reference's jackknifeVariance) has noise, of the render's
-// jackknife variance of the block mean over the reference's, channels summed. A median, not a sum:
-// rare huge samples (a small light found by a bounce, a firefly) would make a sum swing tenfold
-// between renders of one stage. 0 without blocks that have noise.
-double typicalNoise(const std::vector<Image>& jackknife, const Image& referenceJackknife,
-                    int blockSize);
+// jackknife variance of the block mean (`ownJackknife`, from jackknifeBlockVariance) over the
+// reference's, channels summed. A median, not a sum: rare huge samples (a small light found by a
+// bounce, a firefly) would make a sum swing tenfold between renders of one stage. 0 without
+// blocks that have noise.
+double typicalNoise(const Image& ownJackknife, const Image& referenceJackknife, int blockSize);
 // Var(Σ_blocks (m - mean) / sd) / blocks over the replicates, per channel (see blockCorrelation).
 glm::dvec3 replicateBlockCorrelation(const std::vector<Image>& replicates, int blockSize);
 
@@ -171,6 +177,9 @@ struct TileBounds {
 // The image cut into tiles of `tileSize` (smaller at the right and bottom borders), row by row.
 std::vector<TileBounds> tilesOf(int width, int height, int tileSize);
 glm::dvec3 tileMean(const Image& image, const TileBounds& tile);
+// A width x height image constant over each tile of `tileSize`, at value(tile).
+Image constantOverTiles(int width, int height, int tileSize,
+                        const std::function<glm::dvec3(const TileBounds&)>& value);
 
 // The smallest relative bias, the same everywhere (the image times 1 + b), that the whole-image
 // mean-shift test catches in half of the renders of a stage as noisy as the reference's: from a

@@ -261,12 +261,10 @@ void judgeAgainstReference(CaseResult& result, const LoadedImage& render,
     // missing cosine is both wrong and noisier), the case names the technique left out. Noise
     // that far past the whole-image tests' allowance fails them too, and no pattern explains it.
     const Comparison& c = result.comparison;
-    const bool meanAgrees =
-        c.worstTileP >= settings.tileAlpha && c.omnibusP >= settings.omnibusAlpha;
     const LikelyCause cause = result.diagnosis->cause;
     const bool noPattern =
         cause == LikelyCause::Unknown || cause == LikelyCause::Noise || cause == LikelyCause::Local;
-    if (c.tooNoisy() && (meanAgrees || noPattern))
+    if (c.tooNoisy() && (c.meanAgrees(settings) || noPattern))
       result.diagnosis = Diagnosis{LikelyCause::Noise, 1.0, result.comparison.requiredTechnique};
   }
   if (!result.todos.empty()) {

@@ -51,7 +51,6 @@ class EmitterPicker {
     return (uint64_t(mesh) << 32) | triangle;
   }
 
- private:
   std::vector<EmissiveTriangle> emitters_;
   DiscreteDistribution distribution_;
   std::unordered_map<uint64_t, size_t> indexOf_;  // by key(mesh, triangle)
