@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <map>
 
@@ -250,6 +251,92 @@ TEST_F(Diagnosis, LightSaysTooBrightOrTooDarkAsMeasured) {
           << d.line();
     }
   patterns_.erase(pattern::kIndirect);
+}
+
+// A soft blob of a colour of its own, centred at (cx, cy): where a mask below is.
+Image colouredBlob(double cx, double cy, Color colour) {
+  const Image grey = boxFiltered([cx, cy](double x, double y) {
+    const double dx = x - cx, dy = y - cy;
+    return std::exp(-(dx * dx + dy * dy) / 90.0);
+  });
+  Image image = grey;
+  for (Color& pixel : image.pixels) pixel *= colour;
+  return image;
+}
+
+TEST_F(Diagnosis, BackgroundLightSaysWhereAndWhichWayAsMeasured) {
+  // The background seen by the camera, and its light on surfaces after bounces, each in a
+  // region of its own; a background of another colour (grey for blue-grey) changes each
+  // channel by a factor of its own.
+  const Image escaped = colouredBlob(48.0, 14.0, Color(0.2f, 0.25f, 0.3f));
+  const Image skyLit = colouredBlob(14.0, 20.0, Color(0.1f, 0.12f, 0.15f));
+  patterns_[pattern::kEscaped] = &escaped;
+  patterns_[pattern::kSkyLit] = &skyLit;
+  Image grey = truth_;
+  for (size_t p = 0; p < grey.pixels.size(); ++p)
+    grey.pixels[p] += (Color(0.3f) / Color(0.2f, 0.25f, 0.3f) - 1.0f) * escaped.pixels[p];
+  const pathway::Diagnosis d = diagnose(withNoise(grey, 7), 3);
+  EXPECT_EQ(d.cause, LikelyCause::Background) << d.line();
+  // Red 50% and green 20% too bright (blue right), within the noise.
+  double red = 0.0, green = 0.0;
+  const size_t at = d.explanation.find("another colour (red ");
+  ASSERT_NE(at, std::string::npos) << d.line();
+  ASSERT_EQ(std::sscanf(d.explanation.c_str() + at,
+                        "another colour (red %lf%% too bright, green %lf", &red, &green),
+            2)
+      << d.line();
+  EXPECT_NEAR(red, 50.0, 5.0) << d.line();
+  EXPECT_NEAR(green, 20.0, 5.0) << d.line();
+  for (const float a : {-0.5f, 0.5f}) {
+    Image image = truth_;
+    for (size_t p = 0; p < image.pixels.size(); ++p) image.pixels[p] += a * skyLit.pixels[p];
+    const pathway::Diagnosis lit = diagnose(withNoise(image, 7), 5);
+    EXPECT_EQ(lit.cause, LikelyCause::Background) << lit.line();
+    EXPECT_NE(lit.explanation.find("reaches surfaces after a bounce"), std::string::npos)
+        << lit.line();
+    EXPECT_NE(lit.explanation.find(a > 0 ? "% too bright" : "% too dark"), std::string::npos)
+        << lit.line();
+  }
+  patterns_.erase(pattern::kEscaped);
+  patterns_.erase(pattern::kSkyLit);
+}
+
+TEST_F(Diagnosis, DeeperOrShallowerPathsSayWhichAsMeasured) {
+  // What one bounce more adds, in a region of its own: a depth test off by one either way.
+  const Image deeper = colouredBlob(46.0, 50.0, Color(0.15f));
+  patterns_[pattern::kOneBounceMore] = &deeper;
+  for (const float a : {-0.6f, 1.0f}) {
+    Image image = truth_;
+    for (size_t p = 0; p < image.pixels.size(); ++p) image.pixels[p] += a * deeper.pixels[p];
+    const pathway::Diagnosis d = diagnose(withNoise(image, 7), 4);
+    EXPECT_EQ(d.cause, LikelyCause::Indirect) << d.line();
+    EXPECT_NE(d.explanation.find(a > 0 ? "bounces past the depth" : "missing from the deepest"),
+              std::string::npos)
+        << d.line();
+  }
+  patterns_.erase(pattern::kOneBounceMore);
+}
+
+TEST_F(Diagnosis, ABlurAlongOneAxisSaysWhich) {
+  // Each pixel the mean of itself (twice) and the pixels two away across, or down.
+  for (const bool acrossOnly : {true, false}) {
+    Image image = truth_;
+    for (int y = 0; y < kSize; ++y)
+      for (int x = 0; x < kSize; ++x) {
+        const int dx = acrossOnly ? 2 : 0, dy = acrossOnly ? 0 : 2;
+        image.at(x, y) =
+            (2.0f * truth_.at(x, y) +
+             truth_.at(std::clamp(x + dx, 0, kSize - 1), std::clamp(y + dy, 0, kSize - 1)) +
+             truth_.at(std::clamp(x - dx, 0, kSize - 1), std::clamp(y - dy, 0, kSize - 1))) /
+            4.0f;
+      }
+    const pathway::Diagnosis d = diagnose(withNoise(image, 7));
+    EXPECT_EQ(d.cause, LikelyCause::Edges) << d.line();
+    EXPECT_NE(d.explanation.find(acrossOnly ? "blurrier across and about as sharp down"
+                                            : "about as sharp across and blurrier down"),
+              std::string::npos)
+        << d.line();
+  }
 }
 
 TEST_F(Diagnosis, OneBrightTileIsLocal) {

@@ -195,6 +195,27 @@ TEST(RayTracer, ShadowRayToALightPointIsNotBlockedByEitherEnd) {
   }
 }
 
+TEST(RayTracer, ARayEmbreeRefusesSeesNothingAndIsCounted) {
+  // A NaN direction (a frame built on a zero vector) or an infinite origin: Embree's debug builds
+  // abort on such a ray; the tracer answers "nothing there" and the NaN goes on to the image.
+  Scene scene;
+  scene.materials = {Material{}};
+  test::addQuad(scene, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, -1}, 0);  // floor, up
+  test::finishScene(scene);
+  const RayTracer tracer(scene);
+  RayCounters counters;
+  const float nan = std::nanf(""), inf = kInfinity;
+  for (const Ray& ray :
+       {Ray{Vec3(0, 1, 0), Vec3(nan, -1, 0)}, Ray{Vec3(0, 1, 0), Vec3(0, nan, 0)},
+        Ray{Vec3(0, inf, 0), Vec3(0, -1, 0)}, Ray{Vec3(0, 1, 0), Vec3(0, -1, 0), nan}}) {
+    EXPECT_FALSE(tracer.intersect(ray, RayKind::Primary, counters));
+    EXPECT_FALSE(tracer.occluded(ray, RayKind::Shadow, counters));
+  }
+  EXPECT_EQ(counters.totalRays(), 8u);
+  // The same ray with finite numbers hits the floor: the test can fail.
+  EXPECT_TRUE(tracer.intersect({Vec3(0, 1, 0), Vec3(0, -1, 0)}, RayKind::Primary, counters));
+}
+
 // Every scene is traced robustly; only large ones trade speed for compact memory.
 TEST(RayTracer, BvhIsRobustAlwaysAndCompactOnlyForLargeScenes) {
   EXPECT_EQ(bvhFlags(32), RTC_SCENE_FLAG_ROBUST);

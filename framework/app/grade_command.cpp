@@ -134,6 +134,9 @@ Command addGradeCommand(CLI::App& app) {
       ->add_option("--calibrate-spp", options->calibrationSpp,
                    "With --calibrate: these spp instead of each case's (references made first)")
       ->check(CLI::Range(1u, 1u << 16));
+  grade->add_flag("--verdict-seeds", options->verdictSeeds,
+                  "With --calibrate: after each case's row, a line 'verdict seeds: S ...' with "
+                  "every seed whose failure was confirmed (scripts/power reads it)");
   grade
       ->add_option_function<std::string>(
           "--sandbox",

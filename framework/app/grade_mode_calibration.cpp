@@ -47,6 +47,11 @@ int calibrateMode(const GradeOptions& options) {
                   r.caseId.c_str(), r.spp, r.seeds, r.failures, double(r.failures) / r.seeds,
                   r.confirmedFailures, r.largestWorstP, r.smallestCloseness, r.smallestClosenessP,
                   noise.c_str(), r.tooNoisy, r.seconds, seeds.c_str());
+      if (options.verdictSeeds) {
+        std::printf("verdict seeds:");
+        for (uint64_t seed : r.verdictSeeds) std::printf(" %llu", (unsigned long long)seed);
+        std::printf("\n");
+      }
       std::fflush(stdout);
     }
   }

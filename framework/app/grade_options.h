@@ -35,6 +35,7 @@ struct GradeOptions {
   bool listCases = false;
   int calibrate = 0;                     // > 0: grade this many seeds per case, in this process
   std::vector<uint32_t> calibrationSpp;  // empty: each case's own
+  bool verdictSeeds = false;             // with calibrate: list every seed that got a verdict
   bool quiet = false;
   // How student code is shut in while it compiles and renders (core/sandbox.h).
   SandboxMode sandbox = SandboxMode::Auto;

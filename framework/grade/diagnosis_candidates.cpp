@@ -94,6 +94,28 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
          return std::string("the differences sit at edges: the image is ") +
                 (c[0] > 0 ? "blurrier" : "sharper") + " than the reference there; " + kFilterHint;
        }});
+  // The same across and down apart: a filter that blurs (or sharpens) along one axis only.
+  const Image across = derivative(r, [](const Image& i, int x, int y) {
+    return clamped(i, x + 1, y) + clamped(i, x - 1, y) - 2.0f * i.at(x, y);
+  });
+  const Image down = derivative(r, [](const Image& i, int x, int y) {
+    return clamped(i, x, y + 1) + clamped(i, x, y - 1) - 2.0f * i.at(x, y);
+  });
+  list.push_back(
+      {LikelyCause::Edges,
+       {tileVector(across, tiles), tileVector(down, tiles)},
+       [](const std::vector<double>& c) {
+         // An axis whose coefficient is under a quarter of the other's is called
+         // unchanged: its sign is then mostly the other axis's leak at corners.
+         const double larger = std::max(std::fabs(c[0]), std::fabs(c[1]));
+         auto way = [larger](double a) {
+           return std::fabs(a) < 0.25 * larger ? "about as sharp" : a > 0 ? "blurrier" : "sharper";
+         };
+         return std::string(
+                    "the differences sit at edges, unlike across and down: "
+                    "against the reference, the image is ") +
+                way(c[0]) + " across and " + way(c[1]) + " down; " + kFilterHint;
+       }});
   const Image dx = derivative(r, [](const Image& i, int x, int y) {
     return 0.5f * (clamped(i, x + 1, y) - clamped(i, x - 1, y));
   });
@@ -162,6 +184,21 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
                   "), but not on the emitters themselves: " + gathering;
          }});
   }
+  // All the light surfaces reflect, from the emitters and from the background alike: a weight
+  // wrong at every bounce (the BRDF, a cosine, the pdf) scales it all.
+  if (const Image* skyLit = layer(pattern::kSkyLit); skyLit && direct) {
+    Image reflected = *direct;
+    for (size_t p = 0; p < reflected.pixels.size(); ++p)
+      reflected.pixels[p] += skyLit->pixels[p] + (indirect ? indirect->pixels[p] : Color(0.0f));
+    list.push_back(
+        {LikelyCause::Lit, {tileVector(reflected, tiles)}, [](const std::vector<double>& c) {
+           return "the differences are wherever surfaces reflect light, from the "
+                  "emitters or the background (" +
+                  percent(c[0]) + " " + brighterOrDarker(c[0]) +
+                  "): look at the weight of a bounce: the BRDF, cos theta, the pdf "
+                  "of the direction";
+         }});
+  }
   for (const auto& name : {pattern::directFrom, pattern::litFrom}) {
     std::vector<Vector> perEmitter;
     for (size_t k = 0; const Image* alone = layer(name(k).c_str()); ++k)
@@ -187,13 +224,80 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
                   "): look at the continuation ray and its weight, Russian "
                   "roulette's 1/q, and where paths stop";
          }});
-  if (const Image* escaped = layer(pattern::kEscaped))
+  const Image* escaped = layer(pattern::kEscaped);
+  if (escaped) {
+    const Vector seen = tileVector(*escaped, tiles);
+    list.push_back({LikelyCause::Background, {seen}, [](const std::vector<double>& c) {
+                      return "the differences are where camera rays leave the scene (the "
+                             "background " +
+                             percent(c[0]) + " " + brighterOrDarker(c[0]) +
+                             "): look at what a ray that hits nothing returns";
+                    }});
+    // A background of another colour: each channel off by a factor of its own.
+    std::vector<Vector> channels(3, Vector(seen.size(), 0.0));
+    for (size_t k = 0; k < seen.size(); ++k) channels[k % 3][k] = seen[k];
+    list.push_back({LikelyCause::Background, channels, [](const std::vector<double>& c) {
+                      return "the differences are where camera rays leave the scene, and the "
+                             "background there has another colour (red " +
+                             percent(c[0]) + " " + brighterOrDarker(c[0]) + ", green " +
+                             percent(c[1]) + " " + brighterOrDarker(c[1]) + ", blue " +
+                             percent(c[2]) + " " + brighterOrDarker(c[2]) +
+                             "): look at what a ray that hits nothing returns, colour by colour";
+                    }});
+  }
+  if (const Image* skyLit = layer(pattern::kSkyLit)) {
+    const std::string bounceRay =
+        "look at what a bounce ray that leaves the scene returns, and the weight it is "
+        "multiplied by";
+    list.push_back({LikelyCause::Background,
+                    {tileVector(*skyLit, tiles)},
+                    [bounceRay](const std::vector<double>& c) {
+                      return "the differences are where light from the background reaches "
+                             "surfaces after a bounce (that light " +
+                             percent(c[0]) + " " + brighterOrDarker(c[0]) + "): " + bounceRay;
+                    }});
+    if (escaped) {
+      Image everywhere = *skyLit;
+      for (size_t p = 0; p < everywhere.pixels.size(); ++p)
+        everywhere.pixels[p] += escaped->pixels[p];
+      list.push_back({LikelyCause::Background,
+                      {tileVector(everywhere, tiles)},
+                      [bounceRay](const std::vector<double>& c) {
+                        return "the differences are wherever background light is seen, "
+                               "directly or on surfaces (" +
+                               percent(c[0]) + " " + brighterOrDarker(c[0]) +
+                               "): look at the background's value, and " + bounceRay;
+                      }});
+    }
+  }
+  // Stage 5's continuation rays carry both light from the emitters after two or more bounces
+  // and the background's light on surfaces; a weight wrong on them changes both.
+  if (const Image* skyLit = layer(pattern::kSkyLit); skyLit && indirect) {
+    Image continued = *indirect;
+    for (size_t p = 0; p < continued.pixels.size(); ++p) continued.pixels[p] += skyLit->pixels[p];
     list.push_back(
-        {LikelyCause::Background, {tileVector(*escaped, tiles)}, [](const std::vector<double>& c) {
-           return "the differences are where camera rays leave the scene (the "
-                  "background " +
+        {LikelyCause::Indirect, {tileVector(continued, tiles)}, [](const std::vector<double>& c) {
+           return "the differences are in light that arrives after a bounce from "
+                  "the background, or after two or more from the emitters (" +
                   percent(c[0]) + " " + brighterOrDarker(c[0]) +
-                  "): look at what a ray that hits nothing returns";
+                  "): look at the continuation ray and its weight, Russian "
+                  "roulette's 1/q, and what a bounce ray that leaves the scene returns";
+         }});
+  }
+  if (const Image* deeper = layer(pattern::kOneBounceMore))
+    list.push_back(
+        {LikelyCause::Indirect, {tileVector(*deeper, tiles)}, [](const std::vector<double>& c) {
+           // image ≈ R + a (D - R), D the case one bounce deeper.
+           return c[0] > 0.0
+                      ? "the differences look like light from bounces past the depth the case "
+                        "asks for (" +
+                            percent(c[0]) +
+                            " of one bounce more): look at the depth test, where paths stop, "
+                            "and what counts as a bounce"
+                      : "the differences look like light missing from the deepest bounces (" +
+                            percent(c[0]) +
+                            " of what one bounce more would add, taken away): look at the depth "
+                            "test, where paths stop, Russian roulette's 1/q";
          }});
   if (const Image* occluded = layer(pattern::kOccluded))
     list.push_back(
@@ -226,6 +330,15 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
                                " of the way there: look at the AO ray's length (tMax) and how "
                                "it is passed on";
                       }});
+  // Half-pixel moves as rendered (not fitted: the move is the number searched).
+  for (int j = -1; j <= 1; ++j)
+    for (int i = -1; i <= 1; ++i)
+      if (const Image* moved = layer(pattern::movedByHalves(i, j).c_str()))
+        list.push_back({LikelyCause::Shift,
+                        {tileVector(*moved, tiles)},
+                        [i, j](const std::vector<double>&) { return movedBy(0.5 * i, 0.5 * j); },
+                        2,
+                        false});
   const Image* movedRight = layer(pattern::kMovedRight);
   const Image* movedDown = layer(pattern::kMovedDown);
   if (movedRight && movedDown)

@@ -95,7 +95,8 @@ Diagnosis hardFailureDiagnosis(const DiagnosisInput& input, const Comparison& co
                  "negative pixels: some radiance or weight comes out below zero");
   return named(LikelyCause::Noise, 1.0,
                "some samples were NaN or infinite and were dropped, so the image lacks them: "
-               "look for a division by a pdf that can be 0");
+               "look for a division by a pdf or a length that can be 0, or a direction "
+               "built from a vector that can be 0 (a ray with a NaN direction sees nothing)");
 }
 
 }  // namespace

@@ -46,7 +46,12 @@ constexpr const char* kRenderVariance = "pattern.renderVariance";
 constexpr const char* kMovedRight = "pattern.movedRight";    // image moved 1 pixel right, minus it
 constexpr const char* kMovedDown = "pattern.movedDown";      // the same, down
 constexpr const char* kWiderFilter = "pattern.widerFilter";  // filter 1.25x minus 0.8x as wide
-constexpr const char* kDirect = "pattern.direct";            // light one bounce from the emitters
+// The image rendered moved by (i/2, j/2) pixels (right, down), i, j in {-1, 0, 1}, minus the
+// reference: a half-pixel move exactly, where the stripes are finer than a pixel's first order.
+inline std::string movedByHalves(int i, int j) {
+  return "pattern.moved." + std::to_string(i) + "." + std::to_string(j);
+}
+constexpr const char* kDirect = "pattern.direct";  // light one bounce from the emitters
 constexpr const char* kIndirect = "pattern.indirect";
 // Direct light of emitter (emissive material) k alone: "pattern.direct.0", ...
 inline std::string directFrom(size_t k) {
@@ -56,7 +61,10 @@ inline std::string directFrom(size_t k) {
 inline std::string litFrom(size_t k) {
   return "pattern.lit." + std::to_string(k);
 }  // light after two or more bounces
-constexpr const char* kEscaped = "pattern.escaped";            // the background camera rays see
+constexpr const char* kEscaped = "pattern.escaped";  // the background camera rays see
+constexpr const char* kSkyLit = "pattern.skyLit";    // background light on surfaces, after bounces
+constexpr const char* kOneBounceMore =
+    "pattern.oneBounceMore";                                   // paths one bounce deeper, minus it
 constexpr const char* kOccluded = "pattern.occluded";          // unoccluded AO minus the reference
 constexpr const char* kLongerRays = "pattern.aoLonger";        // AO, rays twice as long, minus it
 constexpr const char* kUnlimitedRays = "pattern.aoUnlimited";  // AO, rays of any length, minus it

@@ -16,6 +16,8 @@ constexpr size_t kMostEmittersApart = 4;
 constexpr int kEscapeRaysPerSide = 4;
 // Seeds of the pattern renders: apart from the replicates' (kReferenceSeed + i).
 constexpr uint64_t kPatternSeed = kReferenceSeed + 500000;
+// Seeds of the background and deeper-path patterns: apart from the per-emitter ones above.
+constexpr uint64_t kLaterPatternSeed = kPatternSeed + 1000;
 
 Image renderVariant(const GradingCase& gradingCase, const RayTracer& tracer,
                     ReferenceTracing tracing, const std::map<std::string, std::string>& params,
@@ -110,11 +112,30 @@ std::map<std::string, Image> makeDifferencePatterns(const GradingCase& gradingCa
     patterns[pattern::kDirect] = difference(m1, m0);
     if (values.number(depth->name) != 1)
       patterns[pattern::kIndirect] = difference(referenceMean, m1);
-    // Each emitter's direct light on its own (the others dark), where there are several: a pdf
-    // that does not match the picking rule is off by a factor of each emitter's own.
+    // One bounce deeper than the case asks: a depth test off by one adds this (and one that
+    // stops a bounce early takes away about what it adds one bounce on).
+    const double asked = values.number(depth->name);
+    if (asked >= 1.0 && asked + 1.0 <= depth->maxValue)
+      patterns[pattern::kOneBounceMore] =
+          difference(renderVariant(gradingCase, tracer, tracing,
+                                   {{depth->name, depth->format(asked + 1.0)}}, kLaterPatternSeed),
+                     referenceMean);
     std::vector<size_t> emissive;
     for (size_t m = 0; m < tracer.scene().materials.size(); ++m)
       if (tracer.scene().materials[m].isEmissive()) emissive.push_back(m);
+    // The background's light on surfaces: every emitter dark, minus what the camera sees of the
+    // background itself. What a bounce ray that leaves the scene returns, and its weight, act here.
+    const Color background = tracer.scene().background;
+    if (background.x > 0.0f || background.y > 0.0f || background.z > 0.0f) {
+      Scene dark = tracer.scene();
+      for (size_t m : emissive) dark.materials[m].emission = Color(0.0f);
+      const RayTracer darkTracer(dark);
+      patterns[pattern::kSkyLit] = difference(
+          renderVariant(gradingCase, darkTracer, tracing, {}, kLaterPatternSeed + 1),
+          renderVariant(gradingCase, darkTracer, tracing, emitted, kLaterPatternSeed + 2));
+    }
+    // Each emitter's direct light on its own (the others dark), where there are several: a pdf
+    // that does not match the picking rule is off by a factor of each emitter's own.
     if (emissive.size() >= 2 && emissive.size() <= kMostEmittersApart) {
       for (size_t k = 0; k < emissive.size(); ++k) {
         Scene alone = tracer.scene();
@@ -140,6 +161,15 @@ std::map<std::string, Image> makeDifferencePatterns(const GradingCase& gradingCa
     patterns[pattern::kMovedDown] =
         difference(renderVariant(gradingCase, tracer, tracing, {}, seed + 2, Vec2(0.0f, half)),
                    renderVariant(gradingCase, tracer, tracing, {}, seed + 3, Vec2(0.0f, -half)));
+    // Half-pixel moves each way, rendered: the pixel-centre and pixel-range mistakes move the
+    // image by just that, and a move of fine stripes is not their interpolation.
+    for (int j = -1; j <= 1; ++j)
+      for (int i = -1; i <= 1; ++i)
+        if (i != 0 || j != 0)
+          patterns[pattern::movedByHalves(i, j)] = difference(
+              renderVariant(gradingCase, tracer, tracing, {},
+                            kLaterPatternSeed + 3 * (j + 1) + i + 1, Vec2(half * i, half * j)),
+              referenceMean);
     // The filter a quarter wider minus a fifth narrower: its support, to first order in ln r.
     const float radius = gradingCase.filterRadius > 0.0f ? gradingCase.filterRadius
                                                          : naturalFilterRadius(gradingCase.filter);

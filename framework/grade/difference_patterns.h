@@ -6,7 +6,11 @@
 //   - pattern.occluded (stages 2, 3): the same AO with rays too short to be blocked, minus the
 //     reference: how much each pixel is occluded;
 //   - pattern.direct and pattern.indirect (stages 4, 5): the case at depth 1 minus depth 0 (light
-//     one bounce from the emitters), and the reference minus depth 1 (light after more bounces).
+//     one bounce from the emitters), and the reference minus depth 1 (light after more bounces);
+//   - pattern.skyLit (stages 4, 5, scenes with a background): the case with every emitter dark
+//     minus the same at depth 0: the background's light on surfaces, after one bounce or more;
+//   - pattern.oneBounceMore (stages 4, 5, a finite depth): the case one bounce deeper, minus the
+//     reference: what a depth test that lets paths go one step too far adds;
 // A pattern that is zero everywhere (no background; a case of depth 1 has no indirect light) is
 // left out; the others are stored as tile means (the diagnosis reads no finer).
 #pragma once

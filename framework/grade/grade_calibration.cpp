@@ -51,7 +51,10 @@ CalibrationResult calibrate(const GradingCase& gradingCase, uint32_t spp, Varian
     result.tooNoisy += comparison.tooNoisy();
     if (!passed) {
       // As the grader does: a failure counts when a render with another seed fails too.
-      result.confirmedFailures += !passes(firstSeed + i + kConfirmationSeedOffset, &confirmation);
+      if (!passes(firstSeed + i + kConfirmationSeedOffset, &confirmation)) {
+        ++result.confirmedFailures;
+        result.verdictSeeds.push_back(firstSeed + i);
+      }
       ++result.failures;
       result.failedSeeds.push_back(firstSeed + i);
       result.largestWorstP =

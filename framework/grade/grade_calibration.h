@@ -31,8 +31,9 @@ struct CalibrationResult {
   double smallestNoiseRatio = 0.0;
   double largestNoiseRatio = 0.0;
   int tooNoisy = 0;
-  std::vector<uint64_t> failedSeeds;  // to look at a failure again: pathway grade --seed S
-  double seconds = 0.0;               // rendering and grading, references excluded
+  std::vector<uint64_t> failedSeeds;   // to look at a failure again: pathway grade --seed S
+  std::vector<uint64_t> verdictSeeds;  // ... of them, those whose confirmation failed too
+  double seconds = 0.0;                // rendering and grading, references excluded
 };
 
 // Grades `variant`'s stage (the reference traced as `tracing` says) (the student's: a loaded stage

@@ -1,6 +1,7 @@
 #include "scene/ray_tracer.h"
 
 #include <atomic>
+#include <cmath>
 #include <string>
 
 #include "core/error.h"
@@ -57,6 +58,18 @@ RTCSceneFlags bvhFlags(size_t triangles) {
 }
 
 namespace {
+
+// What Embree accepts (its Ray::valid(), which its debug builds assert): coordinates within
+// about 1.8e18 and a ray length that is not NaN. Student code can make others (a NaN direction
+// from a frame built on a zero vector); such a ray sees nothing, so the NaN it came from reaches
+// the image, where the grader names the pixels, instead of aborting inside Embree.
+bool embreeAccepts(const Ray& ray) {
+  constexpr float kLargest = 1.844e18f;
+  for (int axis = 0; axis < 3; ++axis)
+    if (!(std::fabs(ray.origin[axis]) <= kLargest) || !(std::fabs(ray.direction[axis]) <= kLargest))
+      return false;
+  return !std::isnan(ray.tMax);
+}
 
 RTCRay toEmbree(const Ray& ray) {
   RTCRay r;
@@ -115,6 +128,7 @@ std::optional<SurfaceHit> RayTracer::intersect(const Ray& ray, RayKind kind,
                                                RayCounters& counters) const {
   counters.count(kind);
   if (log_) log_->push_back({ray, false});
+  if (!embreeAccepts(ray)) return std::nullopt;
   RTCRayHit rayHit;
   rayHit.ray = toEmbree(ray);
   rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
@@ -167,6 +181,7 @@ SurfaceHit RayTracer::surfaceHit(const Ray& ray, uint32_t meshIndex, uint32_t tr
 bool RayTracer::occluded(const Ray& ray, RayKind kind, RayCounters& counters) const {
   counters.count(kind);
   if (log_) log_->push_back({ray, true});
+  if (!embreeAccepts(ray)) return false;
   RTCRay r = toEmbree(ray);
   embree::occluded1(bvh_->scene, r);
   return r.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
