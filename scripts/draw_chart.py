@@ -8,7 +8,7 @@
     draw_chart.py filters DIR --profiles CSV the filters' profiles and looks (filters.png/svg)
     draw_chart.py ratio DIR A B [--spp N]    prints A's error over B's (at N spp or equal time)
 
-Every figure is written as PNG (for slides and the README) and SVG (for print). See docs/charts.md.
+Every figure is written as PNG (for slides and the docs) and SVG (for print). See docs/charts.md.
 """
 import argparse
 import csv

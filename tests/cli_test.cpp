@@ -124,6 +124,13 @@ TEST_F(Cli, OutOfRangeSettingsAreRefused) {
   expectRefused("render " + kScene + " --filter sinc", "sinc");
 }
 
+TEST_F(Cli, AGradeOptionWithoutItsModeIsRefused) {
+  const Outcome outcome = runPathway("grade --verdict-seeds --stage 1");
+  EXPECT_EQ(outcome.exitCode, 1);
+  EXPECT_NE(outcome.output.find("--verdict-seeds goes with --calibrate"), std::string::npos)
+      << outcome.output;
+}
+
 TEST_F(Cli, BadOutputPathIsRefusedBeforeRendering) {
   const Outcome jpg = runPathway("render " + kScene + " -o " + path("out.jpg"));
   EXPECT_EQ(jpg.exitCode, 1);

@@ -281,10 +281,13 @@ TEST_F(Diagnosis, BackgroundLightSaysWhereAndWhichWayAsMeasured) {
   double red = 0.0, green = 0.0;
   const size_t at = d.explanation.find("another colour (red ");
   ASSERT_NE(at, std::string::npos) << d.line();
+  int end = -1;  // set only when the text matches to the end of the format
   ASSERT_EQ(std::sscanf(d.explanation.c_str() + at,
-                        "another colour (red %lf%% too bright, green %lf", &red, &green),
+                        "another colour (red %lf%% too bright, green %lf%% too bright%n", &red,
+                        &green, &end),
             2)
       << d.line();
+  EXPECT_GT(end, 0) << d.line();
   EXPECT_NEAR(red, 50.0, 5.0) << d.line();
   EXPECT_NEAR(green, 20.0, 5.0) << d.line();
   for (const float a : {-0.5f, 0.5f}) {

@@ -214,6 +214,22 @@ TEST(RayTracer, ARayEmbreeRefusesSeesNothingAndIsCounted) {
   EXPECT_EQ(counters.totalRays(), 8u);
   // The same ray with finite numbers hits the floor: the test can fail.
   EXPECT_TRUE(tracer.intersect({Vec3(0, 1, 0), Vec3(0, -1, 0)}, RayKind::Primary, counters));
+  // Embree's limits: coordinates up to about 1.8e18, any length but NaN.
+  EXPECT_TRUE(embreeAccepts({Vec3(1.8e18f, 0, 0), Vec3(0, -1, 0)}));
+  EXPECT_FALSE(embreeAccepts({Vec3(1.9e18f, 0, 0), Vec3(0, -1, 0)}));
+  EXPECT_FALSE(embreeAccepts({Vec3(0, 1, 0), Vec3(0, -1.9e18f, 0)}));
+  EXPECT_TRUE(embreeAccepts({Vec3(0, 1, 0), Vec3(0, -1, 0), kInfinity}));
+  // A packet answers a refused ray as the single-ray query does, and its other rays as usual.
+  const Ray packet[] = {{Vec3(0, 1, 0), Vec3(nan, -1, 0)}, {Vec3(0, 1, 0), Vec3(0, -1, 0)}};
+  const uint32_t which[] = {0, 1};
+  std::optional<SurfaceHit> hits[2];
+  uint8_t blocked[2] = {1, 0};
+  tracer.intersectPacket(packet, which, 2, RayKind::Primary, counters, hits);
+  tracer.occludedPacket(packet, which, 2, RayKind::Shadow, counters, blocked);
+  EXPECT_FALSE(hits[0]);
+  EXPECT_TRUE(hits[1]);
+  EXPECT_FALSE(blocked[0]);
+  EXPECT_TRUE(blocked[1]);
 }
 
 // Every scene is traced robustly; only large ones trade speed for compact memory.

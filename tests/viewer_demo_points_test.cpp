@@ -4,7 +4,7 @@
 //
 // Fixed seeds make every figure deterministic. The margins are stated beside each check; they
 // were measured over seeds 1-10 (PATHWAY_DEMO_POINT_SEEDS=10 runs them all and prints each
-// figure: README.md, "Each demo's point is a test").
+// figure: docs/slides.md, "Each demo's point is a test").
 #ifdef PATHWAY_HAS_VIEWER
 
 #include <gtest/gtest.h>

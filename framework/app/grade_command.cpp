@@ -59,6 +59,8 @@ int run(const GradeOptions& options) {
   if (mode.report == Report::Written) checkReportFolder(options.report);
   if (mode.tableOnly == TableOnly::Refused && options.tableOnly)
     throw PathwayError("--table-only goes with --submissions (and --output)");
+  if (options.verdictSeeds && options.calibrate == 0)
+    throw PathwayError("--verdict-seeds goes with --calibrate");
   return mode.run(options);
 }
 

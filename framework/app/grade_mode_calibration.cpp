@@ -45,8 +45,8 @@ int calibrateMode(const GradeOptions& options) {
           r.largestNoiseRatio > 0.0 ? formatRange(r.smallestNoiseRatio, r.largestNoiseRatio) : "-";
       std::printf("%-32s %5u %6d %9d %9.4f %9d %11.3g %10.3g %11.3g %17s %9d %8.1f%s\n",
                   r.caseId.c_str(), r.spp, r.seeds, r.failures, double(r.failures) / r.seeds,
-                  r.confirmedFailures, r.largestWorstP, r.smallestCloseness, r.smallestClosenessP,
-                  noise.c_str(), r.tooNoisy, r.seconds, seeds.c_str());
+                  int(r.verdictSeeds.size()), r.largestWorstP, r.smallestCloseness,
+                  r.smallestClosenessP, noise.c_str(), r.tooNoisy, r.seconds, seeds.c_str());
       if (options.verdictSeeds) {
         std::printf("verdict seeds:");
         for (uint64_t seed : r.verdictSeeds) std::printf(" %llu", (unsigned long long)seed);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "core/number_format.h"
 
@@ -22,6 +23,14 @@ Image derivative(const Image& r, const std::function<Color(const Image&, int, in
 
 Color clamped(const Image& r, int x, int y) {
   return r.at(std::clamp(x, 0, r.width - 1), std::clamp(y, 0, r.height - 1));
+}
+
+// a + sign·b, or a where there is no b.
+Image sum(const Image& a, const Image* b, float sign = 1.0f) {
+  Image result = a;
+  if (b)
+    for (size_t p = 0; p < result.pixels.size(); ++p) result.pixels[p] += sign * b->pixels[p];
+  return result;
 }
 
 Vector tileVector(const Image& image, const std::vector<TileBounds>& tiles) {
@@ -152,8 +161,15 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
                ? it->second
                : nullptr;
   };
-  const Image* direct = layer(pattern::kDirect);
+  // Bounce rays that leave the scene return the background at every depth, so where there is
+  // one, `direct` and each emitter's masks hold its light too: it is taken out of them below
+  // (skyLitOnce: after one bounce; skyLit: after any number).
+  const Image* skyLit = layer(pattern::kSkyLit);
+  const Image* skyLitOnce = layer(pattern::kSkyLitOnce);
   const Image* indirect = layer(pattern::kIndirect);
+  const Image* oneBounce = layer(pattern::kDirect);
+  std::optional<Image> direct;  // light straight from the emitters
+  if (oneBounce) direct = sum(*oneBounce, skyLitOnce, -1.0f);
   // Where a stage gathers light from the emitters: stage 5 samples them (NEE), stage 4 finds
   // them with its branches.
   const std::string gathering =
@@ -173,36 +189,26 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
                   "emitters (that light " +
                   percent(c[0]) + " " + brighterOrDarker(c[0]) + "): " + gathering;
          }});
-  if (direct && indirect) {
-    Image lit = *direct;
-    for (size_t p = 0; p < lit.pixels.size(); ++p) lit.pixels[p] += indirect->pixels[p];
+  if (oneBounce && indirect) {
+    // Everything surfaces reflect (the background's light included, where there is one): a
+    // weight wrong at every bounce (the BRDF, a cosine, the pdf) scales it all.
+    const Image reflected = sum(*oneBounce, indirect);
     list.push_back(
-        {LikelyCause::Lit, {tileVector(lit, tiles)}, [gathering](const std::vector<double>& c) {
-           return "the differences are wherever light from the emitters arrives, "
-                  "directly or after bounces (" +
+        {LikelyCause::Lit,
+         {tileVector(reflected, tiles)},
+         [gathering](const std::vector<double>& c) {
+           return "the differences are wherever surfaces reflect light, directly or after "
+                  "bounces (" +
                   percent(c[0]) + " " + brighterOrDarker(c[0]) +
                   "), but not on the emitters themselves: " + gathering;
          }});
   }
-  // All the light surfaces reflect, from the emitters and from the background alike: a weight
-  // wrong at every bounce (the BRDF, a cosine, the pdf) scales it all.
-  if (const Image* skyLit = layer(pattern::kSkyLit); skyLit && direct) {
-    Image reflected = *direct;
-    for (size_t p = 0; p < reflected.pixels.size(); ++p)
-      reflected.pixels[p] += skyLit->pixels[p] + (indirect ? indirect->pixels[p] : Color(0.0f));
-    list.push_back(
-        {LikelyCause::Lit, {tileVector(reflected, tiles)}, [](const std::vector<double>& c) {
-           return "the differences are wherever surfaces reflect light, from the "
-                  "emitters or the background (" +
-                  percent(c[0]) + " " + brighterOrDarker(c[0]) +
-                  "): look at the weight of a bounce: the BRDF, cos theta, the pdf "
-                  "of the direction";
-         }});
-  }
-  for (const auto& name : {pattern::directFrom, pattern::litFrom}) {
+  // Each emitter's own light, the background's taken out of each.
+  for (const auto& [name, background] :
+       {std::pair{pattern::directFrom, skyLitOnce}, std::pair{pattern::litFrom, skyLit}}) {
     std::vector<Vector> perEmitter;
     for (size_t k = 0; const Image* alone = layer(name(k).c_str()); ++k)
-      perEmitter.push_back(tileVector(*alone, tiles));
+      perEmitter.push_back(tileVector(sum(*alone, background, -1.0f), tiles));
     if (perEmitter.size() < 2) continue;
     list.push_back({LikelyCause::Lit, perEmitter, [gathering](const std::vector<double>& c) {
                       std::string factors;
@@ -245,7 +251,7 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
                              "): look at what a ray that hits nothing returns, colour by colour";
                     }});
   }
-  if (const Image* skyLit = layer(pattern::kSkyLit)) {
+  if (skyLit) {
     const std::string bounceRay =
         "look at what a bounce ray that leaves the scene returns, and the weight it is "
         "multiplied by";
@@ -257,9 +263,7 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
                              percent(c[0]) + " " + brighterOrDarker(c[0]) + "): " + bounceRay;
                     }});
     if (escaped) {
-      Image everywhere = *skyLit;
-      for (size_t p = 0; p < everywhere.pixels.size(); ++p)
-        everywhere.pixels[p] += escaped->pixels[p];
+      const Image everywhere = sum(*skyLit, escaped);
       list.push_back({LikelyCause::Background,
                       {tileVector(everywhere, tiles)},
                       [bounceRay](const std::vector<double>& c) {
@@ -272,9 +276,8 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
   }
   // Stage 5's continuation rays carry both light from the emitters after two or more bounces
   // and the background's light on surfaces; a weight wrong on them changes both.
-  if (const Image* skyLit = layer(pattern::kSkyLit); skyLit && indirect) {
-    Image continued = *indirect;
-    for (size_t p = 0; p < continued.pixels.size(); ++p) continued.pixels[p] += skyLit->pixels[p];
+  if (skyLitOnce && indirect) {
+    const Image continued = sum(*indirect, skyLitOnce);
     list.push_back(
         {LikelyCause::Indirect, {tileVector(continued, tiles)}, [](const std::vector<double>& c) {
            return "the differences are in light that arrives after a bounce from "

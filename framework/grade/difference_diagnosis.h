@@ -51,7 +51,9 @@ constexpr const char* kWiderFilter = "pattern.widerFilter";  // filter 1.25x min
 inline std::string movedByHalves(int i, int j) {
   return "pattern.moved." + std::to_string(i) + "." + std::to_string(j);
 }
-constexpr const char* kDirect = "pattern.direct";  // light one bounce from the emitters
+// Light after one bounce (from the emitters, and from the background where there is one), and
+// after two or more.
+constexpr const char* kDirect = "pattern.direct";
 constexpr const char* kIndirect = "pattern.indirect";
 // Direct light of emitter (emissive material) k alone: "pattern.direct.0", ...
 inline std::string directFrom(size_t k) {
@@ -60,11 +62,15 @@ inline std::string directFrom(size_t k) {
 // All the light of emitter k alone, directly or after bounces, but not the emitter itself.
 inline std::string litFrom(size_t k) {
   return "pattern.lit." + std::to_string(k);
-}  // light after two or more bounces
+}
+// (Each emitter's masks hold the background's light too, where there is one.)
 constexpr const char* kEscaped = "pattern.escaped";  // the background camera rays see
-constexpr const char* kSkyLit = "pattern.skyLit";    // background light on surfaces, after bounces
-constexpr const char* kOneBounceMore =
-    "pattern.oneBounceMore";                                   // paths one bounce deeper, minus it
+// The background's light on surfaces (every emitter dark): after any number of bounces, and
+// after exactly one.
+constexpr const char* kSkyLit = "pattern.skyLit";
+constexpr const char* kSkyLitOnce = "pattern.skyLitOnce";
+// The case one bounce deeper, minus the reference.
+constexpr const char* kOneBounceMore = "pattern.oneBounceMore";
 constexpr const char* kOccluded = "pattern.occluded";          // unoccluded AO minus the reference
 constexpr const char* kLongerRays = "pattern.aoLonger";        // AO, rays twice as long, minus it
 constexpr const char* kUnlimitedRays = "pattern.aoUnlimited";  // AO, rays of any length, minus it

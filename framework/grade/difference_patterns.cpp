@@ -16,7 +16,8 @@ constexpr size_t kMostEmittersApart = 4;
 constexpr int kEscapeRaysPerSide = 4;
 // Seeds of the pattern renders: apart from the replicates' (kReferenceSeed + i).
 constexpr uint64_t kPatternSeed = kReferenceSeed + 500000;
-// Seeds of the background and deeper-path patterns: apart from the per-emitter ones above.
+// Seeds of the background, deeper-path and half-pixel-move patterns: apart from the per-emitter
+// ones above.
 constexpr uint64_t kLaterPatternSeed = kPatternSeed + 1000;
 
 Image renderVariant(const GradingCase& gradingCase, const RayTracer& tracer,
@@ -130,9 +131,12 @@ std::map<std::string, Image> makeDifferencePatterns(const GradingCase& gradingCa
       Scene dark = tracer.scene();
       for (size_t m : emissive) dark.materials[m].emission = Color(0.0f);
       const RayTracer darkTracer(dark);
+      const Image seen =
+          renderVariant(gradingCase, darkTracer, tracing, emitted, kLaterPatternSeed + 2);
       patterns[pattern::kSkyLit] = difference(
-          renderVariant(gradingCase, darkTracer, tracing, {}, kLaterPatternSeed + 1),
-          renderVariant(gradingCase, darkTracer, tracing, emitted, kLaterPatternSeed + 2));
+          renderVariant(gradingCase, darkTracer, tracing, {}, kLaterPatternSeed + 1), seen);
+      patterns[pattern::kSkyLitOnce] = difference(
+          renderVariant(gradingCase, darkTracer, tracing, direct, kLaterPatternSeed + 12), seen);
     }
     // Each emitter's direct light on its own (the others dark), where there are several: a pdf
     // that does not match the picking rule is off by a factor of each emitter's own.

@@ -7,10 +7,15 @@
 //     reference: how much each pixel is occluded;
 //   - pattern.direct and pattern.indirect (stages 4, 5): the case at depth 1 minus depth 0 (light
 //     one bounce from the emitters), and the reference minus depth 1 (light after more bounces);
-//   - pattern.skyLit (stages 4, 5, scenes with a background): the case with every emitter dark
-//     minus the same at depth 0: the background's light on surfaces, after one bounce or more;
+//   - pattern.skyLit and pattern.skyLitOnce (stages 4, 5, scenes with a background): the case
+//     with every emitter dark minus the same at depth 0, at the case's depth and at depth 1: the
+//     background's light on surfaces, after any number of bounces and after one (bounce rays
+//     that leave the scene return the background at every depth, so pattern.direct holds the
+//     second, and pattern.indirect part of the first);
 //   - pattern.oneBounceMore (stages 4, 5, a finite depth): the case one bounce deeper, minus the
 //     reference: what a depth test that lets paths go one step too far adds;
+//   - pattern.movedRight, movedDown, widerFilter and pattern.moved.I.J (stage 1): the image moved
+//     by a pixel to first order, the filter's width, and each half-pixel move as rendered;
 // A pattern that is zero everywhere (no background; a case of depth 1 has no indirect light) is
 // left out; the others are stored as tile means (the diagnosis reads no finer).
 #pragma once

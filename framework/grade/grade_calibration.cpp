@@ -51,10 +51,8 @@ CalibrationResult calibrate(const GradingCase& gradingCase, uint32_t spp, Varian
     result.tooNoisy += comparison.tooNoisy();
     if (!passed) {
       // As the grader does: a failure counts when a render with another seed fails too.
-      if (!passes(firstSeed + i + kConfirmationSeedOffset, &confirmation)) {
-        ++result.confirmedFailures;
+      if (!passes(firstSeed + i + kConfirmationSeedOffset, &confirmation))
         result.verdictSeeds.push_back(firstSeed + i);
-      }
       ++result.failures;
       result.failedSeeds.push_back(firstSeed + i);
       result.largestWorstP =

@@ -19,9 +19,8 @@ struct CalibrationResult {
   std::string caseId;
   uint32_t spp = 0;
   int seeds = 0;
-  int failures = 0;           // renders the grader failed
-  int confirmedFailures = 0;  // ... whose confirmation render (another seed) failed too: verdicts
-  double largestWorstP = 0;   // over the failed renders: how close the closest call came
+  int failures = 0;          // renders the grader failed
+  double largestWorstP = 0;  // over the failed renders: how close the closest call came
   // Over all renders: the one closest to the reference (Comparison::closeness; an exact image
   // scores about 1), and the chance of an exact image coming that close (the too-close test).
   double smallestCloseness = -1.0;
@@ -31,9 +30,10 @@ struct CalibrationResult {
   double smallestNoiseRatio = 0.0;
   double largestNoiseRatio = 0.0;
   int tooNoisy = 0;
-  std::vector<uint64_t> failedSeeds;   // to look at a failure again: pathway grade --seed S
-  std::vector<uint64_t> verdictSeeds;  // ... of them, those whose confirmation failed too
-  double seconds = 0.0;                // rendering and grading, references excluded
+  std::vector<uint64_t> failedSeeds;  // to look at a failure again: pathway grade --seed S
+  // ... of them, those whose confirmation render (another seed) failed too: the verdicts
+  std::vector<uint64_t> verdictSeeds;
+  double seconds = 0.0;  // rendering and grading, references excluded
 };
 
 // Grades `variant`'s stage (the reference traced as `tracing` says) (the student's: a loaded stage

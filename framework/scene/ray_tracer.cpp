@@ -8,6 +8,15 @@
 #include "scene/embree.h"
 
 namespace pathway {
+
+bool embreeAccepts(const Ray& ray) {
+  constexpr float kLargest = 1.844e18f;  // Embree's FLT_LARGE
+  for (int axis = 0; axis < 3; ++axis)
+    if (!(std::fabs(ray.origin[axis]) <= kLargest) || !(std::fabs(ray.direction[axis]) <= kLargest))
+      return false;
+  return !std::isnan(ray.tMax);
+}
+
 namespace {
 
 struct DeviceState {
@@ -58,18 +67,6 @@ RTCSceneFlags bvhFlags(size_t triangles) {
 }
 
 namespace {
-
-// What Embree accepts (its Ray::valid(), which its debug builds assert): coordinates within
-// about 1.8e18 and a ray length that is not NaN. Student code can make others (a NaN direction
-// from a frame built on a zero vector); such a ray sees nothing, so the NaN it came from reaches
-// the image, where the grader names the pixels, instead of aborting inside Embree.
-bool embreeAccepts(const Ray& ray) {
-  constexpr float kLargest = 1.844e18f;
-  for (int axis = 0; axis < 3; ++axis)
-    if (!(std::fabs(ray.origin[axis]) <= kLargest) || !(std::fabs(ray.direction[axis]) <= kLargest))
-      return false;
-  return !std::isnan(ray.tMax);
-}
 
 RTCRay toEmbree(const Ray& ray) {
   RTCRay r;
@@ -193,13 +190,13 @@ namespace pathway {
 namespace {
 
 // Embree's packet calls take a validity mask: -1 for a lane that holds a ray, 0 for one that
-// does not (the lanes past `count`).
+// does not (the lanes past `count`, and a ray Embree refuses, which then sees nothing).
 void fillPacket(const Ray rays[], const uint32_t which[], int count,
                 int valid[RayTracer::kPacketSize], RTCRay16& packet) {
   for (int i = 0; i < RayTracer::kPacketSize; ++i) {
     const bool used = i < count;
-    valid[i] = used ? -1 : 0;
     const Ray& ray = rays[which[used ? i : 0]];
+    valid[i] = used && embreeAccepts(ray) ? -1 : 0;
     packet.org_x[i] = ray.origin.x;
     packet.org_y[i] = ray.origin.y;
     packet.org_z[i] = ray.origin.z;

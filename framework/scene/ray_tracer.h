@@ -20,6 +20,12 @@ struct LoggedRay {
   bool startsPacket = true;  // the first ray of a packet query, or a single-ray query
 };
 
+// What Embree accepts (its Ray::valid(), which its debug builds assert): coordinates within
+// about 1.8e18 and a length that is not NaN. Student code can make others (a NaN direction from
+// a frame built on a zero vector); every query answers such a ray with "nothing there", so the
+// NaN it came from reaches the image, where the grader names it, instead of aborting in Embree.
+bool embreeAccepts(const Ray& ray);
+
 class RayTracer {
  public:
   explicit RayTracer(const Scene& scene);  // builds the BVH; the scene must outlive the tracer

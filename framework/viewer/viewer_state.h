@@ -89,7 +89,8 @@ bool toggleVariant(ViewerState& state, int lane);
 bool selectStage(ViewerState& state, int lane, int stage);
 
 // Render threads beside a window's UI thread on `cores` cores: one fewer than the cores, so the UI
-// keeps a core for its frames (measured on 2 cores: README, "Benchmarks"); 0 (all) on one core.
+// keeps a core for its frames (measured on 2 cores: docs/benchmarks.md, "The figures in brief");
+// 0 (all) on one core.
 int renderThreadsBesideUi(unsigned cores);
 
 // The job for panes of `width` x `height` render pixels.
