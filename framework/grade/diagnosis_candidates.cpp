@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "core/number_format.h"
+#include "grade/difference_patterns.h"
 
 namespace pathway {
 namespace {
@@ -23,14 +24,6 @@ Image derivative(const Image& r, const std::function<Color(const Image&, int, in
 
 Color clamped(const Image& r, int x, int y) {
   return r.at(std::clamp(x, 0, r.width - 1), std::clamp(y, 0, r.height - 1));
-}
-
-// a + sign·b, or a where there is no b.
-Image sum(const Image& a, const Image* b, float sign = 1.0f) {
-  Image result = a;
-  if (b)
-    for (size_t p = 0; p < result.pixels.size(); ++p) result.pixels[p] += sign * b->pixels[p];
-  return result;
 }
 
 Vector tileVector(const Image& image, const std::vector<TileBounds>& tiles) {
@@ -169,7 +162,7 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
   const Image* indirect = layer(pattern::kIndirect);
   const Image* oneBounce = layer(pattern::kDirect);
   std::optional<Image> direct;  // light straight from the emitters
-  if (oneBounce) direct = sum(*oneBounce, skyLitOnce, -1.0f);
+  if (oneBounce) direct = sumOfImages(*oneBounce, skyLitOnce, -1.0f);
   // Where a stage gathers light from the emitters: stage 5 samples them (NEE), stage 4 finds
   // them with its branches.
   const std::string gathering =
@@ -192,7 +185,7 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
   if (oneBounce && indirect) {
     // Everything surfaces reflect (the background's light included, where there is one): a
     // weight wrong at every bounce (the BRDF, a cosine, the pdf) scales it all.
-    const Image reflected = sum(*oneBounce, indirect);
+    const Image reflected = sumOfImages(*oneBounce, indirect);
     list.push_back(
         {LikelyCause::Lit,
          {tileVector(reflected, tiles)},
@@ -208,7 +201,7 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
        {std::pair{pattern::directFrom, skyLitOnce}, std::pair{pattern::litFrom, skyLit}}) {
     std::vector<Vector> perEmitter;
     for (size_t k = 0; const Image* alone = layer(name(k).c_str()); ++k)
-      perEmitter.push_back(tileVector(sum(*alone, background, -1.0f), tiles));
+      perEmitter.push_back(tileVector(sumOfImages(*alone, background, -1.0f), tiles));
     if (perEmitter.size() < 2) continue;
     list.push_back({LikelyCause::Lit, perEmitter, [gathering](const std::vector<double>& c) {
                       std::string factors;
@@ -263,7 +256,7 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
                              percent(c[0]) + " " + brighterOrDarker(c[0]) + "): " + bounceRay;
                     }});
     if (escaped) {
-      const Image everywhere = sum(*skyLit, escaped);
+      const Image everywhere = sumOfImages(*skyLit, escaped);
       list.push_back({LikelyCause::Background,
                       {tileVector(everywhere, tiles)},
                       [bounceRay](const std::vector<double>& c) {
@@ -277,7 +270,7 @@ std::vector<Candidate> candidates(const DiagnosisInput& input,
   // Stage 5's continuation rays carry both light from the emitters after two or more bounces
   // and the background's light on surfaces; a weight wrong on them changes both.
   if (skyLitOnce && indirect) {
-    const Image continued = sum(*indirect, skyLitOnce);
+    const Image continued = sumOfImages(*indirect, skyLitOnce);
     list.push_back(
         {LikelyCause::Indirect, {tileVector(continued, tiles)}, [](const std::vector<double>& c) {
            return "the differences are in light that arrives after a bounce from "

@@ -34,9 +34,7 @@ Image renderVariant(const GradingCase& gradingCase, const RayTracer& tracer,
 }
 
 Image difference(const Image& a, const Image& b) {
-  Image result = a;
-  for (size_t p = 0; p < result.pixels.size(); ++p) result.pixels[p] -= b.pixels[p];
-  return result;
+  return sumOfImages(a, &b, -1.0f);
 }
 
 bool isZero(const Image& image) {
@@ -68,6 +66,13 @@ Image tileAveraged(const Image& image, int tileSize) {
 }
 
 }  // namespace
+
+Image sumOfImages(const Image& a, const Image* b, float sign) {
+  Image result = a;
+  if (b)
+    for (size_t p = 0; p < result.pixels.size(); ++p) result.pixels[p] += sign * b->pixels[p];
+  return result;
+}
 
 std::map<std::string, Image> makeDifferencePatterns(const GradingCase& gradingCase,
                                                     const RayTracer& tracer,

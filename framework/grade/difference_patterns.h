@@ -29,6 +29,9 @@
 
 namespace pathway {
 
+// a + sign·b, or a where there is no b: how the patterns are made from renders, and combined.
+Image sumOfImages(const Image& a, const Image* b, float sign = 1.0f);
+
 // `renderVariance`: the mean of the replicates' own per-pixel variance estimates, stored as
 // pattern.renderVariance (not fitted: held against a render's own).
 std::map<std::string, Image> makeDifferencePatterns(const GradingCase& gradingCase,
