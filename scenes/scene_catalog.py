@@ -284,6 +284,31 @@ def light_touching_wall():
     return b.build()
 
 
+def light_near_floor():
+    """A light a few centimetres above a floor: a 0.8 m x 0.1 m strip emitter (radiance 2,
+    one-sided, albedo 0.8) facing down at y = 0.04 over a floor (albedo 0.5, 4 m x 4 m facing
+    up); no walls, a black background. The camera looks down at 35 degrees across the strip, so
+    its top (its back, which emits nothing) and the glow on the floor on both sides of it are in
+    view.
+
+    Tests: the light-sampling geometry term cos cos / d^2 where d is small but never zero. Floor
+    points within about 10 cm of the strip get most of their light from emitter points only a
+    few centimetres away, so an estimator that clamps d^2 or otherwise tames 1/d^2 near a light
+    darkens the whole glow, while the estimator's variance stays bounded (d >= 4 cm). Also light
+    an emitter reflects: the strip's front sends part of the glow under it back to the floor
+    (naive recursion sees it from depth 3). No closed form.
+    """
+    b = GltfBuilder()
+    grey = b.material("grey", (0.5, 0.5, 0.5))
+    light_mat = b.material("light", (0.8, 0.8, 0.8), emission=(2.0, 2.0, 2.0))
+    b.mesh("floor", *floor_quad(-2.0, 2.0, -2.0, 2.0), grey)
+    b.mesh("light", *floor_quad(-0.4, 0.4, -0.05, 0.05, y=0.04, up=False), light_mat)
+    down = math.radians(35.0)
+    b.camera((0.0, 1.3 * math.sin(down), 1.3 * math.cos(down)),
+             (0.0, -math.sin(down), -math.cos(down)), 0.7)  # 1.3 m from the origin
+    return b.build()
+
+
 def textured_quad():
     """A 1 m x 1 m quad (z = 0, facing +z) with a 4 x 4 checkerboard baseColorTexture (PNG data
     URI, TEXCOORD_0, repeat sampler), lit only by a constant background of radiance 1.
@@ -563,6 +588,7 @@ SCENES = {
     "corner.gltf": corner,
     "small_light.gltf": small_light,
     "light_touching_wall.gltf": light_touching_wall,
+    "light_near_floor.gltf": light_near_floor,
     "textured_quad.gltf": textured_quad,
     "grading_edges.gltf": grading_edges,
     "grading_stripes.gltf": grading_stripes,

@@ -62,7 +62,8 @@ def check_expectations(name, scene):
     """Scene-specific checks on what the camera sees."""
     counts = scene.get("coverage", {})
     seen = set(counts)
-    back_ok = {"grading_lights.gltf": {"back_light"}}.get(name, set())  # seen from behind
+    back_ok = {"grading_lights.gltf": {"back_light"},  # seen from behind
+               "light_near_floor.gltf": {"light"}}.get(name, set())
     if scene.get("back_hits"):
         backs = back_face_parts(scene)
         if not backs <= back_ok:
@@ -84,6 +85,7 @@ def check_expectations(name, scene):
     must = {"wall.gltf": {"floor", "wall"}, "corner.gltf": {"floor", "wall_x0", "wall_z0"},
             "white_furnace.gltf": {"sphere", "background"}, "textured_quad.gltf": {"quad"},
             "light_touching_wall.gltf": {"light", "back_wall"},
+            "light_near_floor.gltf": {"floor"},
             "grading_edges.gltf": {"background", "star_dark", "star_white", "star_red",
                                    "star_blue", "bars_white", "bars_yellow", "stripes_white",
                                    "stripes_dark", "stripes_green", "sphere"},
@@ -98,6 +100,7 @@ def check_expectations(name, scene):
     centroids = {
         "grading_edges.gltf": {"emitter": True, "sliver": True, "wedge": True},
         "grading_lights.gltf": {"small_light": True, "wall_light": True, "back_light": False},
+        "light_near_floor.gltf": {"light": False},
     }.get(name, {})
     for part_name, front in sorted(centroids.items()):
         hit, hit_front = trace_to_part(scene, part_name)

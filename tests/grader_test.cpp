@@ -193,7 +193,8 @@ class GraderMutant : public Grader, public ::testing::WithParamInterface<Mutant>
 TEST_P(GraderMutant, IsJudgedByItsImage) {
   const Mutant& mutant = GetParam();
   const std::string stage = " --stage " + std::to_string(mutant.stage);
-  // A hang is stopped after 3 s; the other cases render in well under a second.
+  // A hang is stopped after 3 s; the other cases render in well under a second. (Where one case
+  // hangs, the grader's own per-case limit, at least 15 s, stops it.)
   const std::string limit = mutant.expect == "hang" ? " --time-limit 3" : " --time-limit 60";
   const test::CommandOutcome outcome = grade("--stages-library " + mutant.library + stage + limit);
   const std::vector<ResultLine> lines = results();
@@ -248,6 +249,20 @@ TEST_P(GraderMutant, IsJudgedByItsImage) {
         EXPECT_NE(line.output.find("while rendering pixel"), std::string::npos) << line.output;
         EXPECT_NE(line.output.find("it printed nothing before it stopped"), std::string::npos)
             << line.output;
+      }
+  } else if (mutant.expect == "hang-one") {
+    // One case runs past the limit and fails with that reason; every other case is judged and
+    // passes.
+    EXPECT_EQ(outcome.exitCode, 1);
+    EXPECT_EQ(timedOut, 1u) << test::readTextFile((dir_ / "report/results.json").string());
+    EXPECT_EQ(failed, 1u);
+    EXPECT_EQ(crashed, 0u);
+    EXPECT_EQ(lines.size(), gradingCasesOf(mutant.stage).size());
+    for (const ResultLine& line : lines)
+      if (line.status == "failed") {
+        EXPECT_NE(line.output.find("in case stage5-furnace-unlimited-depth"), std::string::npos)
+            << line.output;
+        EXPECT_NE(line.output.find("while rendering pixel"), std::string::npos) << line.output;
       }
   } else {
     // Every case of the stage fails with the reason; the grader itself finishes.

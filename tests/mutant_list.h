@@ -16,7 +16,7 @@ namespace pathway::test {
 struct Mutant {
   std::string name;
   int stage = 0;
-  std::string expect;  // fail, pass, crash or hang
+  std::string expect;  // fail, pass, crash, crash-one, hang or hang-one
   // for fail: the likely cause the bug should read as (scripts/mutant-causes); for pass,
   // "noisier": a valid estimator with more noise, which a note must point out
   std::string cause;

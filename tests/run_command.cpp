@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <fstream>
@@ -21,11 +22,21 @@ CommandOutcome runCommand(const std::string& command) {
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
 }
 
+namespace {
+
+// The running test's name as one folder name: a parameterised test's "Name/param" has a slash.
+std::string testName() {
+  std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  std::replace(name.begin(), name.end(), '/', '_');
+  return name;
+}
+
+}  // namespace
+
 std::filesystem::path freshTestFolder(const std::string& prefix) {
   namespace fs = std::filesystem;
   const fs::path folder =
-      fs::temp_directory_path() / (prefix + "_" + std::to_string(::getpid()) + "_" +
-                                   ::testing::UnitTest::GetInstance()->current_test_info()->name());
+      fs::temp_directory_path() / (prefix + "_" + std::to_string(::getpid()) + "_" + testName());
   fs::remove_all(folder);
   fs::create_directories(folder);
   return folder;

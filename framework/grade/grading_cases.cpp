@@ -64,11 +64,13 @@ std::vector<GradingCase> declareCases() {
           .size(64, 48)
           .spp(256)
           .tiles(2),
+      // 512 spp: 7/3 rounded to 2.33 in the outer piece (its lobe 15 % shallower) was caught in
+      // 64 of 100 renders at 256.
       B(1, "stripes-mitchell", "grading_stripes.gltf",
         "Mitchell-Netravali's profile: each coefficient of both pieces")
           .filter(FilterType::MitchellNetravali)
           .size(64, 48)
-          .spp(256)
+          .spp(512)
           .tiles(2),
       B(1, "stripes-gaussian", "grading_stripes.gltf",
         "the Gaussian's width and cut-off on stripes of every frequency")
@@ -99,11 +101,13 @@ std::vector<GradingCase> declareCases() {
                              "stage 2 averages the ao-rays AO rays per hit that the case asks for "
                              "(here 128); fewer rays are that much noisier (assignments/stage2/"
                              "README.md, Required)"),
+      // 32 spp: the back of back_light is the only back face in view, and an AO frame flipped
+      // there was caught in 53 of 100 renders at 8 spp (100 of 100 at 32).
       B(2, "lights", "grading_lights.gltf", "AO in an open room, background for misses")
           .param("ao-rays", "2")
           .param("ao-distance", "0.5")
           .filter(FilterType::Tent)
-          .spp(8),
+          .spp(32),
       // Stage 3: the same integral, one 4D point per sample.
       B(3, "cornell-box", "cornell_box.gltf", "4D AO from Sobol' dimensions 2-3")
           .param("ao-distance", "0.3")
@@ -111,6 +115,15 @@ std::vector<GradingCase> declareCases() {
           .spp(16),
       B(3, "corner", "corner.gltf", "AO = 1/4 in an inside corner")
           .param("ao-distance", "1e6")
+          .sobol()
+          .size(64, 64)
+          .spp(16),
+      // A reach just past the ceiling: only directions within 11.4° of the normal meet it
+      // (AO = (h/r)² = 0.961, from u1 < 0.039 in the reference's warp), so a warp that loses the
+      // pole's neighbourhood shows: the pair clamped to [0.05, 0.95] passed every other case.
+      B(3, "ceiling-near-pole", "ceiling.gltf",
+        "directions close to the normal: (h/r)^2 where the reach barely passes the ceiling")
+          .param("ao-distance", "1.02")
           .sobol()
           .size(64, 64)
           .spp(16),
@@ -123,11 +136,23 @@ std::vector<GradingCase> declareCases() {
           .param("branching", "2")
           .param("depth", "2")
           .spp(8),
+      // 32 spp: branches skipped at grazing angles (4 % of the bounce light) were caught in 92 of
+      // 100 renders at 8 spp (100 of 100 at 32).
       B(4, "lights", "grading_lights.gltf",
         "direct light by recursion, background, one-sided emitters")
           .param("branching", "3")
           .param("depth", "1")
-          .spp(8),
+          .spp(32),
+      // Light an emitter reflects: the strip's white front sends back the glow under it, which
+      // needs depth 3 to reach the camera (recursion that stops at emitters passed every other
+      // case). 16-pixel tiles: rare paths that find the strip make 8-pixel tiles heavy-tailed
+      // (the reference failed 30 renders in 1000 there, none with 16).
+      B(4, "light-near-floor", "light_near_floor.gltf",
+        "light that an emitter reflects: the strip's white front over its own glow")
+          .param("branching", "2")
+          .param("depth", "3")
+          .spp(16)
+          .tiles(16),
       // Stage 5: NEE on and off, small and touching lights, one-sided emitters, background, both
       // ways of picking an emitter.
       // 128 spp: continuation rays moved off the surface by a fixed 0.01 instead of spawnRay's
@@ -136,9 +161,25 @@ std::vector<GradingCase> declareCases() {
         "path tracing with NEE and Russian roulette; ray offsets")
           .spp(128)
           .requiresTechnique(kNoLightSamplingBound, kLightSampling),
-      B(5, "cornell-box-no-nee", "cornell_box.gltf", "emission found by bounces, counted once")
+      // Two bounces, roulette from the first: the emission found at the depth limit is 13 % of the
+      // image's mean, and every path meets the roulette (at the defaults, that emission left out
+      // and a roulette drawn from the direction's number were caught in 0 and 67 of 100 renders;
+      // here in 100 and 100).
+      B(5, "cornell-box-no-nee", "cornell_box.gltf",
+        "emission found by bounces, counted once, up to the depth limit; roulette")
           .param("nee", "off")
+          .param("max-depth", "2")
+          .param("rr-depth", "1")
           .spp(64),
+      // No depth limit in a closed room: roulette alone ends the paths, and a q that stays 1
+      // never does (it runs past the time limit); every pixel is Le/(1-a) = 2. NEE off: with it,
+      // the room's edges (emitters touching walls) give rare huge samples (1 render in 300
+      // failed).
+      B(5, "furnace-unlimited-depth", "furnace_closed.gltf",
+        "paths of any length in a closed room: roulette alone ends them, L = 2")
+          .param("max-depth", "-1")
+          .param("nee", "off")
+          .spp(16),
       // Without NEE a path finds this light only by hitting it: hundreds of times the noise.
       B(5, "small-light", "small_light.gltf",
         "NEE towards a small emitter: the area pdf, and that the light is sampled at all")
@@ -149,6 +190,14 @@ std::vector<GradingCase> declareCases() {
       B(5, "light-touching-wall", "light_touching_wall.gltf",
         "shadow rays that start or end at a contact line")
           .param("max-depth", "3")
+          .spp(16),
+      // The geometry term at a few centimetres: an estimator that clamps d² near a light (to
+      // tame fireflies) darkens the glow around it (measured: max(d², 0.01) is caught in 0 of 100
+      // renders on light-touching-wall, whose noise at the contact line hides it; 100 of 100
+      // here).
+      B(5, "light-near-floor", "light_near_floor.gltf",
+        "shadow rays to a light a few centimetres away: 1/d^2 where d is small")
+          .param("max-depth", "2")
           .spp(16),
       B(5, "lights-area", "grading_lights.gltf",
         "emitters of different size and radiance, one seen from behind")

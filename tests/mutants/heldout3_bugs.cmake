@@ -135,6 +135,7 @@ pathway_mutant(h3_s3_fixed_direction_sample 3 stage3/stage3_ao_4d.cpp fail:occlu
 # "Keep away from the poles": the pair clamped to [0.05, 0.95]. 5 % of the directions piled on
 # each end of the elevation and azimuth ranges. Unchanged in the corner (infinite D) and under
 # the ceiling (threshold inside the range); a small change where D is short: occlusion, subtle.
+# (Since written, the case stage3-ceiling-near-pole puts the threshold below 0.05: caught there.)
 pathway_mutant(h3_s3_pair_clamped 3 stage3/stage3_ao_4d.cpp fail:occlusion
   "AO pair clamped to [0.05, 0.95] before the warp (piles up grazing/polar and phi ends)"
   FROM "const Vec2 directionSample = samples.next2D()"
