@@ -84,7 +84,7 @@ int benchFast(const FastOptions& options) {
   std::printf("%-8s %12s %12s %16s %14s %14s\n", "stage", "@ref s", "@fast s", "@fast / @ref",
               "same bits", "mean diff");
   int status = 0;
-  for (int stage : {2, 3, 5}) {
+  for (int stage : {1, 2, 3, 5}) {
     if (referenceIntegratorName(stage, ReferenceTracing::Fastest) ==
         referenceIntegratorName(stage, ReferenceTracing::SingleRay))
       throw PathwayError("stage " + std::to_string(stage) + " has no wavefront version here");
@@ -137,7 +137,7 @@ int benchFast(const FastOptions& options) {
                 fastSeconds / singleSeconds);
     std::fflush(stdout);
   };
-  for (int stage : {2, 3, 5})
+  for (int stage : {1, 2, 3, 5})
     row("grade --make-references --stage " + std::to_string(stage),
         {"grade", "--make-references", "--stage", std::to_string(stage), "--references", references,
          "-q"});

@@ -9,6 +9,8 @@
 #include "engine/recipe_builder.h"
 #include "engine/render_session.h"
 #include "film/pixel_filter.h"
+#include "render/stage_kit.h"
+#include "sampling/pcg32.h"
 #include "stage_under_test.h"
 #include "test_scenes.h"
 
@@ -33,6 +35,51 @@ TEST(Film, SplatAddsTheFilterWeightToEveryPixelInReach) {
             << filterTypeName(type) << " pixel " << x << "," << y;
         EXPECT_FLOAT_EQ(static_cast<float>(sums.weightedRadiance.y), expected * radiance.y);
       }
+    }
+  }
+}
+
+// The reference's splat, which every reference render calls, takes each row's and column's weight
+// once (solutions/stage1): its sums must be those of the splat as the stage README defines it,
+// bit for bit, or the references would change with it.
+TEST(Film, ReferenceSplatAddsExactlyTheDefinitionsSums) {
+  PATHWAY_REQUIRE_REFERENCE();
+  const Stage1Functions& reference = StageKit(1, Variant::Reference, EarlierStages::Own).stage1();
+  // The definition: every pixel whose centre is within the radius, row by row, f(dx)·f(dy).
+  auto definition = [](FilmBlock& film, Vec2 p, const Color& radiance, const PixelFilter& f) {
+    const float r = f.radius();
+    for (int y = static_cast<int>(std::ceil(p.y - 0.5f - r));
+         y <= static_cast<int>(std::floor(p.y - 0.5f + r)); ++y)
+      for (int x = static_cast<int>(std::ceil(p.x - 0.5f - r));
+           x <= static_cast<int>(std::floor(p.x - 0.5f + r)); ++x) {
+        const float weight = f.evaluate(p.x - (x + 0.5f), p.y - (y + 0.5f));
+        if (weight != 0.0f) film.addSample(x, y, weight, radiance);
+      }
+  };
+  Pcg32 random(45);
+  for (FilterType type :
+       {FilterType::Box, FilterType::Tent, FilterType::MitchellNetravali, FilterType::Gaussian}) {
+    // The natural radius, others, and one wider than the fast splat's window (it hands over).
+    for (float radius : {naturalFilterRadius(type), 0.3f, 1.7f, 7.4f, 8.0f}) {
+      const PixelFilter filter(type, radius, reference.profiles);
+      FilmBlock fast(24, 24, 4, 2, 16, 16), plain(24, 24, 4, 2, 16, 16);
+      for (int i = 0; i < 400; ++i) {
+        // Over the block and a margin round it, where pixels out of the block are skipped.
+        const Vec2 p(random.nextFloat() * 30.0f - 3.0f, random.nextFloat() * 30.0f - 3.0f);
+        const Color radiance(random.nextFloat(), random.nextFloat() * 2.0f, 0.5f);
+        reference.splat(fast, p, radiance, filter);
+        definition(plain, p, radiance, filter);
+      }
+      for (int y = 2; y < 18; ++y)
+        for (int x = 4; x < 20; ++x) {
+          const PixelSums &a = fast.at(x, y), &b = plain.at(x, y);
+          ASSERT_TRUE(a.weightedRadiance == b.weightedRadiance && a.weight == b.weight &&
+                      a.absWeight == b.absWeight &&
+                      a.squaredWeightRadiance == b.squaredWeightRadiance &&
+                      a.squaredWeightRadiance2 == b.squaredWeightRadiance2 &&
+                      a.squaredWeight == b.squaredWeight && a.sampleCount == b.sampleCount)
+              << filterTypeName(type) << " radius " << radius << " pixel " << x << "," << y;
+        }
     }
   }
 }

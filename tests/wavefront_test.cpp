@@ -106,6 +106,13 @@ TEST(WavefrontStages, PathTracerGivesTheSingleRayReferencesImageBitForBit) {
           {"textured_quad.gltf", {}, SamplerType::Sobol, 4}});
 }
 
+TEST(WavefrontStages, EyeLightGivesTheSingleRayReferencesImageBitForBit) {
+  PATHWAY_REQUIRE_WAVEFRONT();
+  compareWithSingleRay(1, {{"cornell_box.gltf", {}, SamplerType::Independent, 4},
+                           {"grading_stripes.gltf", {}, SamplerType::Sobol, 8},
+                           {"textured_quad.gltf", {}, SamplerType::Stratified, 4}});
+}
+
 TEST(WavefrontStages, NestedAmbientOcclusionGivesTheSingleRayReferencesImageBitForBit) {
   PATHWAY_REQUIRE_WAVEFRONT();
   compareWithSingleRay(
@@ -128,7 +135,7 @@ TEST(WavefrontStages, AmbientOcclusion4DGivesTheSingleRayReferencesImageBitForBi
 // the single-ray reference, bit for bit.
 TEST(WavefrontStages, EveryGradingCaseGetsTheSingleRayReferencesReplicates) {
   PATHWAY_REQUIRE_WAVEFRONT();
-  for (int stage : {2, 3, 5}) {
+  for (int stage : {1, 2, 3, 5}) {
     for (const GradingCase* c : gradingCasesOf(stage)) {
       const Scene scene = loadScene(scenePath(c->scene));
       const RayTracer tracer(scene);
@@ -149,7 +156,7 @@ TEST(WavefrontStages, EveryGradingCaseGetsTheSingleRayReferencesReplicates) {
 TEST(WavefrontStages, TheFastNamesAreWavefrontIntegratorsAndOtherParametersChangeTheImage) {
   PATHWAY_REQUIRE_WAVEFRONT();
   const Scene scene = loadScene(scenePath("cornell_box.gltf"));
-  for (int stage : {2, 3, 5}) {
+  for (int stage : {1, 2, 3, 5}) {
     const IntegratorInfo& info =
         findIntegrator(referenceIntegratorName(stage, ReferenceTracing::Fastest));
     EXPECT_TRUE(info.wavefront) << info.name;
@@ -251,7 +258,7 @@ TEST(WavefrontStages, ReferencesRenderWithTheWavefrontVersionUnlessAskedForSingl
                                           "-p",           "nee=off"};
   const std::vector<std::string> expected = {"scene.gltf",  "-i",
                                              "stage5@fast", "--integrator",
-                                             "stage1@ref",  "--integrator=stage3@fast",
+                                             "stage1@fast", "--integrator=stage3@fast",
                                              "-p",          "nee=off"};
   EXPECT_EQ(expected, withFastestReference(given));
 }

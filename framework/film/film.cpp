@@ -37,11 +37,6 @@ FilmBlock::FilmBlock(int imageWidth, int imageHeight, int x0, int y0, int width,
   sums_.resize(static_cast<size_t>(width_) * height_);
 }
 
-void FilmBlock::addSample(int x, int y, float weight, const Color& radiance) {
-  if (x < x0_ || y < y0_ || x >= x0_ + width_ || y >= y0_ + height_) return;
-  sums_[static_cast<size_t>(y - y0_) * width_ + (x - x0_)].add(weight, glm::dvec3(radiance));
-}
-
 void FilmBlock::clear() {
   std::fill(sums_.begin(), sums_.end(), PixelSums{});
 }

@@ -67,7 +67,11 @@ class FilmBlock {
   FilmBlock(int imageWidth, int imageHeight, int x0, int y0, int width, int height);
 
   // Adds one filter-weighted sample to pixel (x, y): Σ w·L and Σ w (and the variance moments).
-  void addSample(int x, int y, float weight, const Color& radiance);
+  // Inline: every splat of every render calls it for each pixel in reach.
+  void addSample(int x, int y, float weight, const Color& radiance) {
+    if (x < x0_ || y < y0_ || x >= x0_ + width_ || y >= y0_ + height_) return;
+    sums_[static_cast<size_t>(y - y0_) * width_ + (x - x0_)].add(weight, glm::dvec3(radiance));
+  }
   void clear();
 
   int x0() const { return x0_; }

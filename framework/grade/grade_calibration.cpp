@@ -1,8 +1,12 @@
 #include "grade/grade_calibration.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <chrono>
 #include <map>
+#include <mutex>
+#include <vector>
 
 #include "grade/grading_reference.h"
 #include "grade/jackknife_render.h"
@@ -37,28 +41,48 @@ CalibrationResult calibrate(const GradingCase& gradingCase, uint32_t spp, Varian
     *comparison = compareWithReference(render.images, render.metadata, reference, settings);
     return comparison->passed(settings);
   };
-  for (int i = 0; i < seeds; ++i) {
+  // What the table needs of one seed's grading (a Comparison holds every tile's verdict).
+  struct SeedOutcome {
+    bool passed = true, confirmed = false;  // confirmed: the confirmation render failed too
+    double closeness, closenessP, noiseRatio, worstP;
+    bool tooNoisy;
+  };
+  // The seeds are graded side by side: small images leave cores idle within one render. Each
+  // seed's render is the same whoever runs it, and the outcomes are gathered in seed order.
+  std::vector<SeedOutcome> outcomes(static_cast<size_t>(std::max(seeds, 0)));
+  std::mutex progress;
+  int done = 0;
+  tbb::parallel_for(0, seeds, [&](int i) {
     Comparison comparison, confirmation;
-    const bool passed = passes(firstSeed + i, &comparison);
-    if (comparison.closeness >= 0 &&
-        (result.smallestCloseness < 0 || comparison.closeness < result.smallestCloseness)) {
-      result.smallestCloseness = comparison.closeness;
-      result.smallestClosenessP = comparison.closenessP;
+    SeedOutcome& o = outcomes[static_cast<size_t>(i)];
+    o.passed = passes(firstSeed + i, &comparison);
+    // As the grader does: a failure counts when a render with another seed fails too.
+    if (!o.passed) o.confirmed = !passes(firstSeed + i + kConfirmationSeedOffset, &confirmation);
+    o.closeness = comparison.closeness;
+    o.closenessP = comparison.closenessP;
+    o.noiseRatio = comparison.noiseRatio;
+    o.worstP = std::min(comparison.worstTileP, comparison.omnibusP);
+    o.tooNoisy = comparison.tooNoisy();
+    const std::lock_guard<std::mutex> lock(progress);
+    if (onSeed) onSeed(++done);
+  });
+  for (int i = 0; i < seeds; ++i) {
+    const SeedOutcome& o = outcomes[static_cast<size_t>(i)];
+    if (o.closeness >= 0 &&
+        (result.smallestCloseness < 0 || o.closeness < result.smallestCloseness)) {
+      result.smallestCloseness = o.closeness;
+      result.smallestClosenessP = o.closenessP;
     }
-    if (i == 0 || comparison.noiseRatio < result.smallestNoiseRatio)
-      result.smallestNoiseRatio = comparison.noiseRatio;
-    result.largestNoiseRatio = std::max(result.largestNoiseRatio, comparison.noiseRatio);
-    result.tooNoisy += comparison.tooNoisy();
-    if (!passed) {
-      // As the grader does: a failure counts when a render with another seed fails too.
-      if (!passes(firstSeed + i + kConfirmationSeedOffset, &confirmation))
-        result.verdictSeeds.push_back(firstSeed + i);
+    if (i == 0 || o.noiseRatio < result.smallestNoiseRatio)
+      result.smallestNoiseRatio = o.noiseRatio;
+    result.largestNoiseRatio = std::max(result.largestNoiseRatio, o.noiseRatio);
+    result.tooNoisy += o.tooNoisy;
+    if (!o.passed) {
+      if (o.confirmed) result.verdictSeeds.push_back(firstSeed + i);
       ++result.failures;
       result.failedSeeds.push_back(firstSeed + i);
-      result.largestWorstP =
-          std::max(result.largestWorstP, std::min(comparison.worstTileP, comparison.omnibusP));
+      result.largestWorstP = std::max(result.largestWorstP, o.worstP);
     }
-    if (onSeed) onSeed(i + 1);
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -10,8 +10,7 @@
 
 namespace pathway {
 GradingReference makeGradingReference(const GradingCase& gradingCase, const RayTracer& tracer,
-                                      ReferenceTracing tracing,
-                                      const std::function<void(int)>& onReplicate) {
+                                      ReferenceTracing tracing) {
   std::vector<Image> replicates;
   Image ownVariance;  // the mean of the replicates' own per-pixel variance estimates
   GradingReference reference;
@@ -44,7 +43,6 @@ GradingReference makeGradingReference(const GradingCase& gradingCase, const RayT
       ownJackknives.push_back(own);
     }
     replicates.push_back(std::move(result.images.color));
-    if (onReplicate) onReplicate(i + 1);
   }
   reference.mean = Image(replicates.front().width, replicates.front().height);
   for (size_t p = 0; p < reference.mean.pixels.size(); ++p) {

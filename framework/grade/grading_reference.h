@@ -5,7 +5,6 @@
 // settings that made it in its metadata.
 #pragma once
 
-#include <functional>
 #include <map>
 #include <string>
 
@@ -35,12 +34,10 @@ struct GradingReference {
   std::map<std::string, Image> patterns;
 };
 
-// Renders the case's replicates with the reference stage (traced as `tracing` says);
-// `onReplicate(done)` reports progress. Throws PathwayError when the reference is not built in or
-// a replicate drops invalid samples.
+// Renders the case's replicates with the reference stage (traced as `tracing` says). Throws
+// PathwayError when the reference is not built in or a replicate drops invalid samples.
 GradingReference makeGradingReference(const GradingCase& gradingCase, const RayTracer& tracer,
-                                      ReferenceTracing tracing = ReferenceTracing::Fastest,
-                                      const std::function<void(int)>& onReplicate = {});
+                                      ReferenceTracing tracing = ReferenceTracing::Fastest);
 
 void writeGradingReference(const std::string& path, const GradingReference& reference);
 // Throws PathwayError naming the file: missing, unreadable or truncated, or not a grading

@@ -14,6 +14,7 @@
 #include <cmath>
 
 #include "render/stage_api.h"
+#include "render/wavefront.h"
 #include "stages/stage1.h"  // the stage's parameters: setup.params.<field>
 
 namespace pathway {
@@ -67,11 +68,71 @@ void splat(FilmBlock& film, Vec2 p, const Color& radiance, const PixelFilter& fi
   }
 }
 
+#if defined(PATHWAY_VARIANT_REFERENCE)
+// The same splat, faster, for the reference build, whose splat every reference render of every
+// stage calls. The 2D filter is f(dx)·f(dy) (PixelFilter::evaluate), so the profile is evaluated
+// once per column and once per row in reach instead of twice per pixel; each pixel gets the same
+// product of the same two floats, in the same order, so the film's sums are bit for bit the
+// splat's above (test: Film.ReferenceSplatAddsExactlyTheDefinitionsSums). A window wider than
+// its arrays (17 pixels, at the largest radius, 8) goes to the splat above.
+void separableSplat(FilmBlock& film, Vec2 p, const Color& radiance, const PixelFilter& filter) {
+  constexpr int kMostInReach = 16;
+  const float r = filter.radius();
+  const int xFirst = static_cast<int>(std::ceil(p.x - 0.5f - r));
+  const int xLast = static_cast<int>(std::floor(p.x - 0.5f + r));
+  const int yFirst = static_cast<int>(std::ceil(p.y - 0.5f - r));
+  const int yLast = static_cast<int>(std::floor(p.y - 0.5f + r));
+  if (xLast - xFirst >= kMostInReach || yLast - yFirst >= kMostInReach)
+    return splat(film, p, radiance, filter);
+  float columnWeight[kMostInReach], rowWeight[kMostInReach];
+  for (int x = xFirst; x <= xLast; ++x)
+    columnWeight[x - xFirst] = filter.evaluate1D(p.x - (x + 0.5f));
+  for (int y = yFirst; y <= yLast; ++y) rowWeight[y - yFirst] = filter.evaluate1D(p.y - (y + 0.5f));
+  for (int y = yFirst; y <= yLast; ++y) {
+    if (rowWeight[y - yFirst] == 0.0f) continue;  // then every weight of the row is 0
+    for (int x = xFirst; x <= xLast; ++x) {
+      const float weight = columnWeight[x - xFirst] * rowWeight[y - yFirst];
+      if (weight != 0.0f) film.addSample(x, y, weight, radiance);
+    }
+  }
+}
+constexpr auto kHandedOnSplat = separableSplat;
+#else
+constexpr auto kHandedOnSplat = splat;
+#endif
+
 // Stage 1 hands its filters and splat on to every later stage; its shading is the framework's
 // eye light.
 const bool registered = registerStage<EyeLightIntegrator>(
-    stage1(),
-    Stage1Functions{{boxFilter, tentFilter, mitchellNetravaliFilter, gaussianFilter}, splat});
+    stage1(), Stage1Functions{{boxFilter, tentFilter, mitchellNetravaliFilter, gaussianFilter},
+                              kHandedOnSplat});
+
+// The wavefront version, "stage1@fast", for the renders that are not student code (references,
+// calibration): a batch's camera rays traced together in 16-ray Embree packets (a packet's rays
+// are samples of one or two pixels, so they are close to one ray), then shaded by the eye light
+// one by one, as EyeLightIntegrator::Li shades. Its image equals stage1@ref's wherever the
+// packets report the hits single rays do (test: WavefrontStages.*).
+class WavefrontEyeLight : public WavefrontIntegrator {
+ public:
+  explicit WavefrontEyeLight(const StageSetup<Stage1Params>&) {}
+
+  void LiBatch(CameraSampleBatch& batch, const RenderContext& context) const override {
+    const size_t n = batch.size();
+    thread_local std::vector<std::optional<SurfaceHit>> hits;
+    thread_local std::vector<uint32_t> every;
+    hits.resize(n);
+    every.resize(n);
+    for (uint32_t i = 0; i < n; ++i) every[i] = i;
+    intersectAll(context, batch.cameraRays, every, RayKind::Primary, hits);
+    batch.radiance.resize(n);
+    batch.rays.assign(n, 1);
+    for (size_t i = 0; i < n; ++i)
+      batch.radiance[i] =
+          hits[i] ? eyeLightShading(*hits[i], batch.cameraRays[i]) : context.background();
+  }
+};
+
+const bool registeredWavefront = registerWavefrontStage<WavefrontEyeLight>(stage1());
 
 }  // namespace
 }  // namespace pathway
