@@ -45,16 +45,13 @@ TEST(Film, SplatAddsTheFilterWeightToEveryPixelInReach) {
 TEST(Film, ReferenceSplatAddsExactlyTheDefinitionsSums) {
   PATHWAY_REQUIRE_REFERENCE();
   const Stage1Functions& reference = StageKit(1, Variant::Reference, EarlierStages::Own).stage1();
-  // The definition: every pixel whose centre is within the radius, row by row, f(dx)·f(dy).
-  auto definition = [](FilmBlock& film, Vec2 p, const Color& radiance, const PixelFilter& f) {
-    const float r = f.radius();
-    for (int y = static_cast<int>(std::ceil(p.y - 0.5f - r));
-         y <= static_cast<int>(std::floor(p.y - 0.5f + r)); ++y)
-      for (int x = static_cast<int>(std::ceil(p.x - 0.5f - r));
-           x <= static_cast<int>(std::floor(p.x - 0.5f + r)); ++x) {
-        const float weight = f.evaluate(p.x - (x + 0.5f), p.y - (y + 0.5f));
-        if (weight != 0.0f) film.addSample(x, y, weight, radiance);
-      }
+  // The definition: every pixel of the block, row by row, gets f(dx)·f(dy) where that is not 0
+  // (the filter is 0 beyond its radius).
+  auto definition = [](FilmBlock& block, Vec2 p, const Color& radiance, const PixelFilter& f) {
+    for (int y = block.y0(); y < block.y0() + block.height(); ++y)
+      for (int x = block.x0(); x < block.x0() + block.width(); ++x)
+        if (const float w = f.evaluate(p.x - (x + 0.5f), p.y - (y + 0.5f)); w != 0.0f)
+          block.addSample(x, y, w, radiance);
   };
   Pcg32 random(45);
   for (FilterType type :

@@ -68,7 +68,7 @@ void splat(FilmBlock& film, Vec2 p, const Color& radiance, const PixelFilter& fi
   }
 }
 
-#if defined(PATHWAY_VARIANT_REFERENCE)
+#ifdef PATHWAY_VARIANT_REFERENCE
 // The same splat, faster, for the reference build, whose splat every reference render of every
 // stage calls. The 2D filter is f(dx)·f(dy) (PixelFilter::evaluate), so the profile is evaluated
 // once per column and once per row in reach instead of twice per pixel; each pixel gets the same
