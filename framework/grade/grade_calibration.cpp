@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
-#include <mutex>
 #include <vector>
 
 #include "grade/grading_reference.h"
@@ -19,8 +18,7 @@ namespace pathway {
 CalibrationResult calibrate(const GradingCase& gradingCase, uint32_t spp, Variant variant,
                             ReferenceTracing tracing, int seeds, uint64_t firstSeed,
                             const std::string& referencesFolder, const std::string& scenesFolder,
-                            const ComparisonSettings& settings,
-                            const std::function<void(int)>& onSeed) {
+                            const ComparisonSettings& settings) {
   GradingCase atSpp = gradingCase;
   atSpp.spp = spp;
   const Scene scene = loadScene(scenesFolder + "/" + gradingCase.scene);
@@ -50,8 +48,6 @@ CalibrationResult calibrate(const GradingCase& gradingCase, uint32_t spp, Varian
   // The seeds are graded side by side: small images leave cores idle within one render. Each
   // seed's render is the same whoever runs it, and the outcomes are gathered in seed order.
   std::vector<SeedOutcome> outcomes(static_cast<size_t>(std::max(seeds, 0)));
-  std::mutex progress;
-  int done = 0;
   tbb::parallel_for(0, seeds, [&](int i) {
     Comparison comparison, confirmation;
     SeedOutcome& o = outcomes[static_cast<size_t>(i)];
@@ -63,8 +59,6 @@ CalibrationResult calibrate(const GradingCase& gradingCase, uint32_t spp, Varian
     o.noiseRatio = comparison.noiseRatio;
     o.worstP = std::min(comparison.worstTileP, comparison.omnibusP);
     o.tooNoisy = comparison.tooNoisy();
-    const std::lock_guard<std::mutex> lock(progress);
-    if (onSeed) onSeed(++done);
   });
   for (int i = 0; i < seeds; ++i) {
     const SeedOutcome& o = outcomes[static_cast<size_t>(i)];

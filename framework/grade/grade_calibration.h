@@ -6,7 +6,6 @@
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -42,7 +41,6 @@ struct CalibrationResult {
 CalibrationResult calibrate(const GradingCase& gradingCase, uint32_t spp, Variant variant,
                             ReferenceTracing tracing, int seeds, uint64_t firstSeed,
                             const std::string& referencesFolder, const std::string& scenesFolder,
-                            const ComparisonSettings& settings,
-                            const std::function<void(int)>& onSeed = {});
+                            const ComparisonSettings& settings);
 
 }  // namespace pathway
