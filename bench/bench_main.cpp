@@ -258,8 +258,9 @@ constexpr const char* kUsage =
     "           differ by more than 1 % (or 4 standard errors, when noise is larger)\n"
     "  fast:   stageN@fast vs stageN@ref: renders in turns, agreement, and grade\n"
     "          --make-references / --calibrate SEEDS with and without --single-ray\n"
-    "  floor:  stage5@fast's render vs its own rays replayed through raw Embree packets (robust\n"
-    "          and non-robust BVH), for the image (width 256, 64 spp) and the viewer's pane\n";
+    "  floor:  stage2/3/5@fast's renders vs their own rays replayed through raw Embree packets\n"
+    "          (robust and non-robust BVH), for the image (width 256, 64 spp) and, stages 3 and\n"
+    "          5, the viewer's pane\n";
 
 // A mistake on the command line: one message, the usage is not repeated.
 struct UsageError : PathwayError {

@@ -107,8 +107,8 @@ struct FloorRow {
 };
 
 FloorRow measure(const Scene& scene, RayTracer& tracer, const RawEmbree& robust,
-                 const RawEmbree& nonRobust, int width, int height, uint32_t spp, int repeats) {
-  const std::string name = referenceIntegratorName(5, ReferenceTracing::Fastest);
+                 const RawEmbree& nonRobust, const std::string& name, int width, int height,
+                 uint32_t spp, int repeats) {
   const Camera camera(scene, width, height);
   auto recipe = [&](int threads) {
     return RenderRecipe(RecipeBuilder(name)
@@ -159,39 +159,43 @@ int benchFloor(const FloorOptions& options) {
   const Scene scene = loadScene(options.scene);
   RayTracer tracer(scene);
   const RawEmbree robust(scene), nonRobust(scene, RTC_SCENE_FLAG_NONE);
-  const std::string name = referenceIntegratorName(5, ReferenceTracing::Fastest);
   const int height = options.width;  // square, as the peers benchmark renders it
   std::printf(
-      "floor: %s, %s at its defaults, box filter, %d threads, best of %d (render and replays in "
-      "turns); load average %.2f at the start\n"
+      "floor: %s, stageN@fast at its defaults, box filter, %d threads, best of %d (render and "
+      "replays in turns); load average %.2f at the start\n"
       "replay: the rays of a one-thread render of the same image, logged, through raw Embree in "
       "the render's own packets, nothing else (checked: the packets find what single rays "
       "find)\n\n",
-      options.scene.c_str(), name.c_str(), tbb::info::default_concurrency(), options.repeats,
-      loadAverage());
-  const FloorRow image = measure(scene, tracer, robust, nonRobust, options.width, height,
+      options.scene.c_str(), tbb::info::default_concurrency(), options.repeats, loadAverage());
+  std::printf("%dx%d, %u spp            %12s %10s %10s %10s %12s %12s\n", options.width, height,
+              options.samplesPerPixel, "rays", "render s", "robust s", "non-rob. s", "÷ robust",
+              "÷ non-rob.");
+  FloorRow stage5;
+  for (int stage : {2, 3, 5}) {
+    const std::string name = referenceIntegratorName(stage, ReferenceTracing::Fastest);
+    const FloorRow row = measure(scene, tracer, robust, nonRobust, name, options.width, height,
                                  options.samplesPerPixel, options.repeats);
-  std::printf("%dx%d, %u spp, %llu rays          %10s %14s\n", options.width, height,
-              options.samplesPerPixel, static_cast<unsigned long long>(image.rays), "seconds",
-              "÷ render");
-  auto line = [](const std::string& what, double seconds, double render) {
-    std::printf("  %-38s %10.3f %14.3f\n", what.c_str(), seconds, seconds / render);
-  };
-  line(name + " render, in this process", image.render, image.render);
-  line("replay, robust BVH (Pathway's)", image.robust, image.render);
-  line("replay, non-robust BVH", image.nonRobust, image.render);
+    std::printf("  %-26s %12llu %10.3f %10.3f %10.3f %12.2f %12.2f\n", (name + " render").c_str(),
+                static_cast<unsigned long long>(row.rays), row.render, row.robust, row.nonRobust,
+                row.render / row.robust, row.render / row.nonRobust);
+    std::fflush(stdout);
+    if (stage == 5) stage5 = row;
+  }
 
   // Four images' worth of samples, timed together: one is too short to time well.
   constexpr uint32_t kImages = 4;
-  const FloorRow pane = measure(scene, tracer, robust, nonRobust, options.viewerWidth,
-                                options.viewerHeight, kImages, options.repeats);
-  std::printf("\nviewer's pane, %dx%d, 1 spp per image     %10s\n", options.viewerWidth,
-              options.viewerHeight, "images/s");
-  std::printf("  %-38s %10.1f\n", (name + " render, no UI").c_str(), kImages / pane.render);
-  std::printf("  %-38s %10.1f\n", "replay, robust BVH (Pathway's)", kImages / pane.robust);
-  std::printf("  %-38s %10.1f\n", "replay, non-robust BVH", kImages / pane.nonRobust);
-  std::printf("floor: render=%.4f robust=%.4f non-robust=%.4f\n", image.render, image.robust,
-              image.nonRobust);
+  std::printf("\nviewer's pane, %dx%d, 1 spp per image   %10s %10s %10s\n", options.viewerWidth,
+              options.viewerHeight, "render", "robust", "non-rob.");
+  for (int stage : {3, 5}) {
+    const std::string name = referenceIntegratorName(stage, ReferenceTracing::Fastest);
+    const FloorRow pane = measure(scene, tracer, robust, nonRobust, name, options.viewerWidth,
+                                  options.viewerHeight, kImages, options.repeats);
+    std::printf("  %-26s images/s %10.1f %10.1f %10.1f\n", name.c_str(), kImages / pane.render,
+                kImages / pane.robust, kImages / pane.nonRobust);
+    std::fflush(stdout);
+  }
+  std::printf("floor: render=%.4f robust=%.4f non-robust=%.4f\n", stage5.render, stage5.robust,
+              stage5.nonRobust);
   return 0;
 }
 
