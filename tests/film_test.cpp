@@ -44,7 +44,8 @@ TEST(Film, SplatAddsTheFilterWeightToEveryPixelInReach) {
 // bit for bit, or the references would change with it.
 TEST(Film, ReferenceSplatAddsExactlyTheDefinitionsSums) {
   PATHWAY_REQUIRE_REFERENCE();
-  const Stage1Functions& reference = StageKit(1, Variant::Reference, EarlierStages::Own).stage1();
+  const StageKit kit(1, Variant::Reference, EarlierStages::Own);
+  const Stage1Functions& reference = kit.stage1();
   // The definition: every pixel of the block, row by row, gets f(dx)·f(dy) where that is not 0
   // (the filter is 0 beyond its radius).
   auto definition = [](FilmBlock& block, Vec2 p, const Color& radiance, const PixelFilter& f) {
