@@ -23,10 +23,18 @@ int makeReferencesMode(const GradeOptions& options) {
   const auto start = Clock::now();
   std::filesystem::create_directories(options.references);
   const std::vector<const GradingCase*> cases = selectedCases(options);
-  std::map<std::string, std::unique_ptr<Scene>> scenes;  // each loaded once, before the cases run
-  for (const GradingCase* c : cases)
-    if (!scenes[c->scene])
-      scenes[c->scene] = std::make_unique<Scene>(loadScene(kScenesDir + "/" + c->scene));
+  // Each scene loaded and its BVH built once, before the cases run; the cases share them.
+  struct LoadedScene {
+    std::unique_ptr<Scene> scene;
+    std::unique_ptr<RayTracer> tracer;
+  };
+  std::map<std::string, LoadedScene> scenes;
+  for (const GradingCase* c : cases) {
+    LoadedScene& loaded = scenes[c->scene];
+    if (loaded.scene) continue;
+    loaded.scene = std::make_unique<Scene>(loadScene(kScenesDir + "/" + c->scene));
+    loaded.tracer = std::make_unique<RayTracer>(*loaded.scene);
+  }
 
   // The cases side by side: a small image leaves cores idle within one render, and a case's
   // reference is the same whichever thread renders it. Lines come in the order cases finish.
@@ -34,8 +42,8 @@ int makeReferencesMode(const GradeOptions& options) {
   tbb::parallel_for(size_t(0), cases.size(), [&](size_t i) {
     const auto caseStart = Clock::now();
     const GradingCase& c = *cases[i];
-    const RayTracer tracer(*scenes.at(c.scene));
-    const GradingReference reference = makeGradingReference(c, tracer, options.referenceTracing());
+    const GradingReference reference =
+        makeGradingReference(c, *scenes.at(c.scene).tracer, options.referenceTracing());
     const std::string path = options.references + "/" + c.referenceFile();
     std::filesystem::create_directories(std::filesystem::path(path).parent_path());
     writeGradingReference(path, reference);
