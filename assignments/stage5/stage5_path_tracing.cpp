@@ -137,7 +137,8 @@ class PathTracer : public Integrator {
   const Stage2Functions& stage2_;  // stage 2: cosine-weighted directions
 };
 
-const bool registered = registerStage<PathTracer>(stage5());
+// Stage 5 hands its light sampling on to the warp test (`pathway warptest --stage 5`).
+const bool registered = registerStage<PathTracer>(stage5(), Stage5Functions{sampleLight});
 
 }  // namespace
 }  // namespace pathway

@@ -26,6 +26,7 @@ Command addChartCommand(CLI::App& app);
 Command addMergeCommand(CLI::App& app);
 Command addClusterCommand(CLI::App& app);
 Command addReferenceCommand(CLI::App& app);
+Command addWarptestCommand(CLI::App& app);
 Command addViewCommand(CLI::App& app);  // only when built with the viewer (PATHWAY_HAS_VIEWER)
 
 }  // namespace pathway

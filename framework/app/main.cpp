@@ -18,8 +18,9 @@ int main(int argc, char** argv) {
   CLI::App app{"Pathway: from pixel filtering to path tracing, one stage at a time."};
   app.require_subcommand(1);
   std::vector<pathway::Command> commands = {
-      pathway::addRenderCommand(app), pathway::addGradeCommand(app), pathway::addChartCommand(app),
-      pathway::addMergeCommand(app), pathway::addClusterCommand(app)};
+      pathway::addRenderCommand(app),  pathway::addGradeCommand(app),
+      pathway::addChartCommand(app),   pathway::addMergeCommand(app),
+      pathway::addClusterCommand(app), pathway::addWarptestCommand(app)};
   commands.push_back(pathway::addSandboxedRunCommand(app));  // hidden: its sandboxed compiler
   const pathway::Command reference = pathway::addReferenceCommand(app);
   commands.push_back(reference);

@@ -76,6 +76,9 @@
 //     float (*ambientOcclusionSample)(const RenderContext& context, const SurfaceHit& hit, Vec2 u,
 //                                     float distance);  // V·cos θ / (π·pdf)
 //   };
+//   struct Stage5Functions {  // for the warp test (`pathway warptest --stage 5`)
+//     LightSample (*sampleLight)(const EmitterPicker& lights, float uPick, Vec2 uPoint);
+//   };
 // Stage 1's film and filter (film/film.h, film/pixel_filter.h):
 //   void FilmBlock::addSample(int x, int y, float weight, const Color& radiance);  // Σ w·L, Σ w
 //   float PixelFilter::radius() const;                  // f is 0 when |dx| or |dy| exceeds it
@@ -124,6 +127,8 @@
 //                                                         const Stage1Functions& handedOn);
 //   template <typename IntegratorType> bool registerStage(const StageDefinition<P>& stage,
 //                                                         const Stage2Functions& handedOn);
+//   template <typename IntegratorType> bool registerStage(const StageDefinition<P>& stage,
+//                                                         const Stage5Functions& handedOn);
 //
 // Stage 4's ray budget is checked by the framework before rendering starts.
 #pragma once
@@ -175,7 +180,8 @@ bool registerStage(const StageDefinition<Params>& stage) {
       });
 }
 
-// The same, for the stages that hand functions on to the later ones (stages 1 and 2).
+// The same, for the stages that hand functions on (stages 1 and 2 to the later ones, stage 5 to
+// the warp test).
 template <typename IntegratorType, typename Params>
 bool registerStage(const StageDefinition<Params>& stage, const Stage1Functions& handedOn) {
   provideStage1(PATHWAY_THIS_VARIANT, handedOn);
@@ -184,6 +190,11 @@ bool registerStage(const StageDefinition<Params>& stage, const Stage1Functions& 
 template <typename IntegratorType, typename Params>
 bool registerStage(const StageDefinition<Params>& stage, const Stage2Functions& handedOn) {
   provideStage2(PATHWAY_THIS_VARIANT, handedOn);
+  return registerStage<IntegratorType>(stage);
+}
+template <typename IntegratorType, typename Params>
+bool registerStage(const StageDefinition<Params>& stage, const Stage5Functions& handedOn) {
+  provideStage5(PATHWAY_THIS_VARIANT, handedOn);
   return registerStage<IntegratorType>(stage);
 }
 

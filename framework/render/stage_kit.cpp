@@ -17,6 +17,7 @@ int slot(Variant variant) {
 struct Provided {
   std::optional<Stage1Functions> stage1;
   std::optional<Stage2Functions> stage2;
+  std::optional<Stage5Functions> stage5;
 };
 
 Provided& provided(Variant variant) {
@@ -60,12 +61,22 @@ const Stage2Functions& StageKit::stage2() const {
   return *functions;
 }
 
+const Stage5Functions& stage5Functions(Variant variant) {
+  const auto& functions = provided(variant).stage5;
+  if (!functions) missing(5, variant);
+  return *functions;
+}
+
 void provideStage1(Variant variant, const Stage1Functions& functions) {
   if (admitRegistration(1, variant, "stage 1's functions")) provided(variant).stage1 = functions;
 }
 
 void provideStage2(Variant variant, const Stage2Functions& functions) {
   if (admitRegistration(2, variant, "stage 2's functions")) provided(variant).stage2 = functions;
+}
+
+void provideStage5(Variant variant, const Stage5Functions& functions) {
+  if (admitRegistration(5, variant, "stage 5's functions")) provided(variant).stage5 = functions;
 }
 
 }  // namespace pathway

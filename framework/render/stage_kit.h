@@ -1,6 +1,7 @@
 // The stage kit: what earlier stages hand on to the later ones, as in the lecture. Stage 1's
 // filters and splat serve every stage (the renderer splats with them); stage 2's cosine-weighted
-// hemisphere sampling and AO estimate serve stages 3-5.
+// hemisphere sampling and AO estimate serve stages 3-5. Stage 5's light sampling serves no later
+// stage, only the warp test (grade/warp_fit.h), which tests it as it tests stage 2's directions.
 //
 // Each variant (the student's, and the reference when solutions/ is built in) provides its own
 // stage 1 and stage 2 functions when its stage files register. A kit picks, for each earlier
@@ -14,6 +15,7 @@
 #include "core/variant.h"
 #include "film/film.h"
 #include "film/pixel_filter.h"
+#include "render/emitter_picker.h"
 #include "render/integrator.h"
 
 namespace pathway {
@@ -35,6 +37,13 @@ struct Stage2Functions {
   // One AO direction from `u`, traced up to `distance`: V·cos θ / (π·pdf).
   float (*ambientOcclusionSample)(const RenderContext& context, const SurfaceHit& hit, Vec2 u,
                                   float distance) = nullptr;
+};
+
+// What stage 5 hands on (to the warp test).
+struct Stage5Functions {
+  // A point on the emitters for next-event estimation: `lights.pick(uPick)` chooses a triangle,
+  // `uPoint` the point on it; with its density per unit area over all emitters.
+  LightSample (*sampleLight)(const EmitterPicker& lights, float uPick, Vec2 uPoint) = nullptr;
 };
 
 // Where an integrator's earlier stages come from.
@@ -64,8 +73,13 @@ class StageKit {
   Variant variants_[2];
 };
 
-// Called when a variant's stage 1 or stage 2 file registers (see render/stage_api.h).
+// Stage 5's functions in `variant`. Throws PathwayError naming the stage and the variant when
+// that stage is not built into this program.
+const Stage5Functions& stage5Functions(Variant variant);
+
+// Called when a variant's stage 1, 2 or 5 file registers (see render/stage_api.h).
 void provideStage1(Variant variant, const Stage1Functions& functions);
 void provideStage2(Variant variant, const Stage2Functions& functions);
+void provideStage5(Variant variant, const Stage5Functions& functions);
 
 }  // namespace pathway

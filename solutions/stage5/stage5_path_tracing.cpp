@@ -181,7 +181,8 @@ class PathTracer : public Integrator {
   const Stage2Functions& stage2_;  // stage 2: cosine-weighted directions
 };
 
-const bool registered = registerStage<PathTracer>(stage5());
+// Stage 5 hands its light sampling on to the warp test (`pathway warptest --stage 5`).
+const bool registered = registerStage<PathTracer>(stage5(), Stage5Functions{sampleLight});
 
 // The wavefront version, "stage5@fast": this path tracer run on a batch of paths at once, for the
 // renders that are not student code (references, calibration, charts, cluster renders; never part
