@@ -32,6 +32,7 @@ CaseRenderJob sampleJob() {
   job.referenceStages = {1, 2};
   job.referenceFolder = "/srv/course files/reference";
   job.reportsSandbox = true;
+  job.warpTestStage = 5;
   return job;
 }
 
@@ -69,6 +70,13 @@ TEST(CaseRenderJob, ItsCommandLineReadsBackAsTheSameJob) {
   EXPECT_EQ(
       job.imagePath(*job.cases[1].gradingCase),
       "/tmp/a grading folder/work/" + job.cases[1].gradingCase->id() + "-18446744073709551615.exr");
+  // The warp test alone, with no case: its outcome goes beside the renders.
+  CaseRenderJob warp = plain;
+  warp.cases.clear();
+  warp.warpTestStage = 2;
+  EXPECT_EQ(CaseRenderJob::fromArguments(warp.toArguments()), warp);
+  EXPECT_EQ(job.warpTestPath(),
+            "/tmp/a grading folder/work/warptest-stage5-18446744073709551615.txt");
 }
 
 // A child grading a student's stage N holds the reference's stages below N at most; one grading
@@ -133,7 +141,12 @@ TEST(CaseRenderJob, AnythingElseIsRefusedNamingWhat) {
   EXPECT_EQ(refusal(edited(1, 3, {})), command + ": no --output given");
   EXPECT_EQ(
       refusal({command, "--output", "o", "--scenes", "s", "--seed", "1", "--sandbox", "auto"}),
-      command + ": no --case given");
+      command + ": no --case or --warp-test given");
+  // A warp test of a stage that has none, or asked for twice.
+  std::vector<std::string> warp = arguments;
+  *(std::find(warp.begin(), warp.end(), "--warp-test") + 1) = "3";
+  EXPECT_EQ(refusal(warp), command + ": --warp-test '3' is not a stage with a warp test (2 or 5)");
+  EXPECT_EQ(refusal(edited(1, 1, {"--warp-test", "2"})), command + ": --warp-test is given twice");
   EXPECT_EQ(refusal({command, "--output", "o", "--scenes", "s", "--seed", "1"}),
             command + ": no --sandbox given");
   EXPECT_EQ(refusal(edited(0, 1, {"grade"})),

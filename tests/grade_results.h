@@ -19,10 +19,14 @@ struct CaseLine {
       0.0;  // extra_data.noise_ratio: times as noisy as the reference (0: not measured)
 };
 
+// The cases' lines (the checks beside them left out).
 std::vector<CaseLine> caseLines(const std::string& json);
 // The overall score.
 double score(const std::string& json);
-// Each case's status by its name.
+// Each case's status by its name (the checks beside the cases left out).
 std::map<std::string, std::string> caseStatuses(const std::string& json);
+// Each check's status by its name: the warp tests beside the cases, which carry no points (a
+// check with a max_score other than 0 fails the test that reads it).
+std::map<std::string, std::string> checkStatuses(const std::string& json);
 
 }  // namespace pathway::test

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include "grade/stage_grading.h"
 #include "grade_results.h"
@@ -70,6 +71,12 @@ TEST_F(Grader, TheReferenceStagesPassWithFreshSeeds) {
   EXPECT_EQ(page.find("stage3-corner-z.png"), std::string::npos);
   EXPECT_NE(page.find("worst tile p"), std::string::npos);
   EXPECT_NE(page.find("M rays/s"), std::string::npos);  // your speed beside the reference's
+  // Beside the cases: the warp tests of stages 2 and 5, passed, with no points.
+  const std::string json = test::readTextFile((dir_ / "report/results.json").string());
+  EXPECT_EQ(test::checkStatuses(json),
+            (std::map<std::string, std::string>{{"Stage 2 · warp test (no points)", "passed"},
+                                                {"Stage 5 · warp test (no points)", "passed"}}));
+  EXPECT_NE(page.find("Your sampling routines: warp tests (no points)"), std::string::npos);
 }
 
 TEST_F(Grader, TheUntouchedSkeletonsFailOnTheirImages) {
@@ -85,12 +92,42 @@ TEST_F(Grader, TheUntouchedSkeletonsFailOnTheirImages) {
       EXPECT_NE(line.output.find("TODO at assignments/stage"), std::string::npos) << line.output;
     }
   }
+  // The skeletons' sampling routines fail their warp tests (stage 5's report is the last one).
+  const std::string json = test::readTextFile((dir_ / "report/results.json").string());
+  EXPECT_EQ(test::checkStatuses(json),
+            (std::map<std::string, std::string>{{"Stage 5 · warp test (no points)", "failed"}}));
+  EXPECT_NE(json.find("summed over the emitters"), std::string::npos) << json;
   // A failing case shows its maps and difference beside the two images.
   const std::string page = test::readTextFile((dir_ / "report/index.html").string());
   for (const char* picture : {"image", "reference", "z", "block-z", "difference"})
     EXPECT_NE(page.find(std::string("stage5-cornell-box-") + picture + ".png"), std::string::npos)
         << picture;
 }
+
+#ifdef PATHWAY_MUTANT_LIST
+TEST_F(Grader, AWrongSamplingRoutineFailsItsWarpTestBesideTheCases) {
+  const std::map<std::string, std::string> verdicts = {
+      {"s2_uniform_directions", "your directions crowd towards the horizon"},
+      {"s5_area_pdf_two_percent", "summed over the emitters, is 0.9804"}};
+  for (const auto& [name, verdict] : verdicts) {
+    std::string library;
+    int stage = 0;
+    for (const test::Mutant& mutant : test::mutants())
+      if (mutant.name == name) library = mutant.library, stage = mutant.stage;
+    ASSERT_FALSE(library.empty()) << name << " is not in " << PATHWAY_MUTANT_LIST;
+    grade("--stages-library " + library + " --stage " + std::to_string(stage));
+    const std::string json = test::readTextFile((dir_ / "report/results.json").string());
+    const std::string check = "Stage " + std::to_string(stage) + " · warp test (no points)";
+    EXPECT_EQ(test::checkStatuses(json), (std::map<std::string, std::string>{{check, "failed"}}))
+        << name;
+    EXPECT_NE(json.find(verdict), std::string::npos) << name << ": " << json;
+    // No points for it: the score is the cases' alone.
+    double cases = 0.0;
+    for (const ResultLine& line : results()) cases += line.score;
+    EXPECT_NEAR(test::score(json), cases, 1e-9) << name;
+  }
+}
+#endif
 
 TEST_F(Grader, BadInputGetsOneMessageAndAFailedResult) {
   if (!test::haveReference()) GTEST_SKIP() << "needs the reference stages";

@@ -131,6 +131,14 @@ TEST(WarpPicture, WritesOnlyAnSvgFile) {
   const WarpTestResult r = testHemisphereWarp({cosineDirection, cosinePdf}, {});
   const std::string folder = ::testing::TempDir();
   EXPECT_THROW(writeWarpTestSvg(folder + "/warp.png", r, "title"), PathwayError);
+  // A folder that is not there: one message, naming the file asked for.
+  try {
+    writeWarpTestSvg(folder + "/no such folder/warp.svg", r, "title");
+    ADD_FAILURE() << "no error for a missing folder";
+  } catch (const PathwayError& error) {
+    EXPECT_EQ(std::string(error.what()).rfind(folder + "/no such folder/warp.svg: ", 0), 0u)
+        << error.what();
+  }
   writeWarpTestSvg(folder + "/warp.svg", r, "title");
   EXPECT_GT(std::filesystem::file_size(folder + "/warp.svg"), 1000u);
 }

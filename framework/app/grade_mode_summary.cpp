@@ -19,6 +19,8 @@ int writeGradeSummary(const GradeSummary& summary, const GradeOptions& options,
     for (const std::string& note : summary.notes) std::printf("%s\n", note.c_str());
     for (const CaseResult& c : summary.cases)
       std::printf("%-40s %s\n", c.title.c_str(), c.passed ? "passed" : "FAILED");
+    for (const CaseResult& c : summary.checks)
+      std::printf("%-40s %s\n", c.title.c_str(), c.passed ? "passed" : "FAILED");
     std::printf("%.1f / %.1f points; report %s/index.html, results %s\n", summary.points(),
                 summary.maxPoints(), options.report.c_str(), results.c_str());
   }

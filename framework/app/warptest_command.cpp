@@ -3,7 +3,6 @@
 // against their pdf (grade/warp_fit.h), with a picture (grade/warp_picture.h). Stage 5: the points
 // on the emitters against their pdfArea (grade/light_sampling_fit.h), for both ways of picking an
 // emitter. Over many seeds: how often a correct routine fails.
-#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -13,10 +12,8 @@
 #include "app/grade_options.h"
 #include "core/error.h"
 #include "core/variant.h"
-#include "grade/light_sampling_fit.h"
-#include "grade/warp_fit.h"
+#include "grade/stage_warp_test.h"
 #include "grade/warp_picture.h"
-#include "render/stage_kit.h"
 #include "scene/gltf_loader.h"
 #include "stage_loading/stage_library.h"
 #include "stage_loading/student_stages.h"
@@ -28,53 +25,12 @@ struct WarptestOptions {
   int stage = 2;
   std::string variant = "student";
   std::vector<std::string> stageLibraries;
-  int samples = 200000;
+  int samples = kWarpTestSamples;
   uint64_t seed = 1;
   int seeds = 1;
   std::string picture;
-  std::string scene = kScenesDir + "/grading_lights.gltf";
+  std::string scene = kScenesDir + "/" + kWarpTestScene;
 };
-
-// One seed's test: whether it passed, its smallest p, and what to print.
-struct Outcome {
-  bool passed = true;
-  double p = 1.0;
-  std::string text;
-};
-
-// Stage 2: sampleCosineHemisphere against cosineHemispherePdf.
-Outcome testStage2(const Stage2Functions& stage2, const WarptestOptions& options, uint64_t seed,
-                   const std::string& title) {
-  WarpTestSettings settings;
-  settings.samples = options.samples;
-  settings.seed = seed;
-  if (options.picture.empty()) settings.keptDirections = 0;
-  const WarpTestResult r =
-      testHemisphereWarp({stage2.sampleCosineHemisphere, stage2.cosineHemispherePdf}, settings);
-  if (!options.picture.empty()) writeWarpTestSvg(options.picture, r, title);
-  return {r.passed, r.p, r.verdict};
-}
-
-// Stage 5: sampleLight with the emitters picked by area, then by power (light-pick's choices).
-Outcome testStage5(const Stage5Functions& stage5, const Scene& scene,
-                   const WarptestOptions& options, uint64_t seed) {
-  const std::vector<EmissiveTriangle> emitters = collectEmissiveTriangles(scene);
-  Outcome outcome;
-  for (const auto& [weighting, name] :
-       {std::pair{EmitterWeighting::Area, "area"}, std::pair{EmitterWeighting::Power, "power"}}) {
-    const EmitterPicker picker(scene, weighting);
-    LightSamplingTestSettings settings;
-    settings.samples = options.samples;
-    settings.seed = seed;
-    const LightSamplingTestResult r =
-        testLightSampling(stage5.sampleLight, picker, emitters, settings);
-    outcome.passed = outcome.passed && r.passed;
-    outcome.p = std::min({outcome.p, r.pickP, r.pointP});
-    outcome.text +=
-        (outcome.text.empty() ? "" : "\n") + std::string("light-pick ") + name + ": " + r.verdict;
-  }
-  return outcome;
-}
 
 int run(const WarptestOptions& options) {
   const Variant variant = options.variant == "reference" ? Variant::Reference : Variant::Student;
@@ -88,31 +44,26 @@ int run(const WarptestOptions& options) {
   if (variant == Variant::Student && options.stageLibraries.empty()) loadStudentStages();
   const std::string whose =
       options.stageLibraries.empty() ? variantName(variant) : options.stageLibraries.front();
-  std::string what;
-  std::function<Outcome(uint64_t, const std::string&)> test;
-  Scene scene;
-  if (options.stage == 2) {
-    const Stage2Functions& stage2 = StageKit(2, variant, EarlierStages::Own).stage2();
-    what = "stage 2 (" + whose + "): sampleCosineHemisphere against cosineHemispherePdf, " +
-           std::to_string(options.samples) + " directions";
-    test = [&](uint64_t seed, const std::string& title) {
-      return testStage2(stage2, options, seed, title);
-    };
-  } else {
-    const Stage5Functions& stage5 = stage5Functions(variant);
-    scene = loadScene(options.scene);
-    what = "stage 5 (" + whose + "): sampleLight's points against their pdfArea on " +
-           options.scene + ", " + std::to_string(options.samples) + " points";
-    test = [&](uint64_t seed, const std::string&) {
-      return testStage5(stage5, scene, options, seed);
-    };
-  }
+  const std::string what =
+      options.stage == 2
+          ? "stage 2 (" + whose + "): sampleCosineHemisphere against cosineHemispherePdf, " +
+                std::to_string(options.samples) + " directions"
+          : "stage 5 (" + whose + "): sampleLight's points against their pdfArea on " +
+                options.scene + ", " + std::to_string(options.samples) + " points";
+  const Scene lights = options.stage == 5 ? loadScene(options.scene) : Scene{};
+  const auto test = [&](uint64_t seed) {
+    return runStageWarpTest(options.stage, variant, &lights, options.samples, seed,
+                            !options.picture.empty());
+  };
 
   if (options.seeds == 1) {
     const std::string title = what + ", seed " + std::to_string(options.seed);
-    const Outcome outcome = test(options.seed, title);
-    std::printf("%s\n%s\n", title.c_str(), outcome.text.c_str());
-    if (!options.picture.empty()) std::printf("picture: %s\n", options.picture.c_str());
+    const StageWarpTest outcome = test(options.seed);
+    std::printf("%s\n%s\n", title.c_str(), outcome.verdict.c_str());
+    if (!options.picture.empty()) {
+      writeWarpTestSvg(options.picture, outcome.hemisphere, title);
+      std::printf("picture: %s\n", options.picture.c_str());
+    }
     return outcome.passed ? 0 : 1;
   }
   // Many seeds: a correct routine fails about once in 10000, a wrong one every time.
@@ -121,10 +72,11 @@ int run(const WarptestOptions& options) {
   uint64_t smallestAt = options.seed;
   for (int k = 0; k < options.seeds; ++k) {
     const uint64_t seed = options.seed + static_cast<uint64_t>(k);
-    const Outcome outcome = test(seed, "");
+    const StageWarpTest outcome = test(seed);
     if (!outcome.passed) {
       ++failures;
-      std::printf("seed %llu: %s\n", static_cast<unsigned long long>(seed), outcome.text.c_str());
+      std::printf("seed %llu: %s\n", static_cast<unsigned long long>(seed),
+                  outcome.verdict.c_str());
     }
     if (outcome.p < smallestP) smallestP = outcome.p, smallestAt = seed;
   }

@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <map>
 #include <set>
 #include <thread>
@@ -14,6 +15,7 @@
 #include "core/error.h"
 #include "engine/pixel_in_progress.h"
 #include "grade/jackknife_render.h"
+#include "grade/stage_warp_test.h"
 #include "io/image_io.h"
 #include "scene/gltf_loader.h"
 #include "stage_loading/reference_library.h"
@@ -37,6 +39,7 @@ constexpr const char* kSandboxFlag = "--sandbox";                 // once
 constexpr const char* kReferenceStageFlag = "--reference-stage";  // per stage, in order
 constexpr const char* kReferenceFolderFlag = "--reference-folder";  // once, with the stages
 constexpr const char* kReportFlag = "--report-sandbox";             // a toggle (present or not)
+constexpr const char* kWarpTestFlag = "--warp-test";                // once, with the stage
 
 // The child's limits: a render and its log need far less than 64 MiB of file, and the largest
 // grading case far less than 4 GiB of address space (thread stacks and malloc's arenas
@@ -83,6 +86,8 @@ std::vector<std::string> CaseRenderJob::toArguments() const {
   if (!referenceFolder.empty())
     arguments.insert(arguments.end(), {kReferenceFolderFlag, referenceFolder});
   if (reportsSandbox) arguments.push_back(kReportFlag);
+  if (warpTestStage != 0)
+    arguments.insert(arguments.end(), {kWarpTestFlag, std::to_string(warpTestStage)});
   arguments.insert(arguments.end(), {kSandboxFlag, sandboxModeName(sandbox)});
   return arguments;
 }
@@ -151,6 +156,11 @@ CaseRenderJob CaseRenderJob::fromArguments(const std::vector<std::string>& argum
     } else if (flag == kReportFlag) {
       once();
       job.reportsSandbox = true;
+    } else if (flag == kWarpTestFlag) {
+      once();
+      const std::string& text = value();
+      if (!readNumber(text, job.warpTestStage) || !hasWarpTest(job.warpTestStage))
+        throw refusal(flag + " '" + text + "' is not a stage with a warp test (2 or 5)");
     } else if (flag == kSandboxFlag) {
       once();
       try {
@@ -164,7 +174,8 @@ CaseRenderJob CaseRenderJob::fromArguments(const std::vector<std::string>& argum
   }
   for (const char* required : {kOutputFlag, kScenesFlag, kSeedFlag, kSandboxFlag})
     if (!given.count(required)) throw refusal(std::string("no ") + required + " given");
-  if (job.cases.empty()) throw refusal(std::string("no ") + kCaseFlag + " given");
+  if (job.cases.empty() && job.warpTestStage == 0)
+    throw refusal(std::string("no ") + kCaseFlag + " or " + kWarpTestFlag + " given");
   if (!job.referenceStages.empty() && job.referenceFolder.empty())
     throw refusal(std::string(kReferenceStageFlag) + " needs a " + kReferenceFolderFlag);
   for (const Case& c : job.cases)
@@ -178,6 +189,11 @@ std::string CaseRenderJob::imagePath(const GradingCase& gradingCase) const {
   return output + "/" + gradingCase.id() + "-" + std::to_string(seed) + ".exr";
 }
 
+std::string CaseRenderJob::warpTestPath() const {
+  return output + "/warptest-stage" + std::to_string(warpTestStage) + "-" + std::to_string(seed) +
+         ".txt";
+}
+
 bool operator==(const CaseRenderJob::Case& a, const CaseRenderJob::Case& b) {
   return a.gradingCase == b.gradingCase && a.timeLimit == b.timeLimit;
 }
@@ -187,7 +203,8 @@ bool operator==(const CaseRenderJob& a, const CaseRenderJob& b) {
          a.together == b.together && a.gradeReference == b.gradeReference &&
          a.singleRay == b.singleRay && a.stageLibraries == b.stageLibraries &&
          a.referenceStages == b.referenceStages && a.referenceFolder == b.referenceFolder &&
-         a.reportsSandbox == b.reportsSandbox && a.sandbox == b.sandbox;
+         a.reportsSandbox == b.reportsSandbox && a.sandbox == b.sandbox &&
+         a.warpTestStage == b.warpTestStage;
 }
 
 std::vector<int> CaseRenderJob::referenceStagesFor(int stage, bool gradeReference, bool together) {
@@ -205,6 +222,7 @@ SandboxPolicy CaseRenderJob::sandboxPolicy() const {
   policy.removesFiles = false;  // what it wrote stays there for the grader's quota to count
   double seconds = kChildCpuGraceSeconds;
   for (const Case& c : cases) seconds += c.timeLimit;
+  if (warpTestStage != 0) seconds += kWarpTestSeconds;
   policy.cpuSeconds =
       static_cast<uint64_t>(std::ceil(seconds * std::max(1u, std::thread::hardware_concurrency())));
   policy.addressSpaceBytes = kChildAddressSpaceBytes;
@@ -221,6 +239,8 @@ void runCaseRenderJob(const CaseRenderJob& job) {
   for (const CaseRenderJob::Case& c : job.cases)
     if (!scenes.count(c.gradingCase->scene))
       scenes.emplace(c.gradingCase->scene, loadScene(job.scenes + "/" + c.gradingCase->scene));
+  if (job.warpTestStage == 5 && !scenes.count(kWarpTestScene))
+    scenes.emplace(kWarpTestScene, loadScene(job.scenes + "/" + kWarpTestScene));
   // The reference stages the job may hold: trusted code, loaded (and sealed, checked) while this
   // process is still the grader's own.
   for (int stage : job.referenceStages)
@@ -257,6 +277,20 @@ void runCaseRenderJob(const CaseRenderJob& job) {
     const RayTracer tracer(scenes.at(gradingCase.scene));
     const RenderResult result = renderWithJackknife(tracer, recipe, gradingCase.ownNoiseCounts());
     writeExr(job.imagePath(gradingCase), result.images, result.metadata);
+  }
+  if (job.warpTestStage != 0) {
+    alarm(static_cast<unsigned>(CaseRenderJob::kWarpTestSeconds));
+    const Variant variant = job.gradeReference ? Variant::Reference : Variant::Student;
+    const auto lights = scenes.find(kWarpTestScene);
+    const StageWarpTest outcome = runStageWarpTest(
+        job.warpTestStage, variant, lights == scenes.end() ? nullptr : &lights->second,
+        kWarpTestSamples, job.seed);
+    const std::string text = (outcome.passed ? "passed\n" : "failed\n") + outcome.verdict + "\n";
+    writeThroughTemporary(job.warpTestPath(), [&](const std::string& temporary) {
+      std::ofstream out(temporary, std::ios::binary);
+      out << text;
+      if (!out.flush()) throw PathwayError(temporary + ": cannot write the warp test's outcome");
+    });
   }
   alarm(0);
 }

@@ -48,6 +48,11 @@ struct CaseRenderJob {
   bool reportsSandbox = false;
   // How the child shuts itself in before it loads them (core/sandbox.h).
   SandboxMode sandbox = SandboxMode::Auto;
+  // After the cases (a job may have none then): the warp test of this stage's sampling routine
+  // (grade/stage_warp_test.h), within kWarpTestSeconds, its outcome written to warpTestPath().
+  // 0: none.
+  int warpTestStage = 0;
+  static constexpr double kWarpTestSeconds = 10.0;
 
   // The reference stages a job of `stage` may hold: stages 1..stage when it grades the reference
   // itself, 1..stage-1 for a student's stage on the reference's earlier stages, none together.
@@ -67,6 +72,9 @@ struct CaseRenderJob {
   // Where the child writes the render of `gradingCase`: a file in `output` named after the case
   // and the seed. It is there only once the case is finished (images are written whole).
   std::string imagePath(const GradingCase& gradingCase) const;
+  // Where the child writes the warp test's outcome: "passed" or "failed" on the first line, the
+  // verdict after it. Written whole, once the test is done.
+  std::string warpTestPath() const;
 };
 
 bool operator==(const CaseRenderJob::Case& a, const CaseRenderJob::Case& b);

@@ -225,6 +225,17 @@ void writeHtmlReport(const std::string& folder, const GradeSummary& summary,
          << "</td></tr>\n";
   }
   page << "</table>\n";
+  if (!summary.checks.empty()) {
+    page
+        << "<h2 id=\"checks\">Your sampling routines: warp tests (no points)</h2>\n"
+        << "<p>Each draws many samples through a routine you wrote and tests them against the "
+        << "density it claims (docs/warptest.md). A failure here says where a failing image's "
+        << "bug may sit; <code>pathway warptest</code> shows it, with a picture for stage 2.</p>\n";
+    for (const CaseResult& c : summary.checks)
+      page << "<h3 id=\"" << escapeHtml(c.id) << "\">" << escapeHtml(c.title)
+           << " &mdash; <span class=\"" << (c.passed ? "pass\">passed" : "fail\">failed")
+           << "</span></h3>\n<pre>" << escapeHtml(c.describe(settings)) << "</pre>\n";
+  }
 
   // Failing cases first, each with its maps and difference; a passing case shows its image beside
   // the reference's and no more (one render's noise against a mean of many would look like a
@@ -310,6 +321,14 @@ std::string gradescopeResults(const GradeSummary& summary, const ComparisonSetti
                        // 0: not measured (stage 1, or no image to measure)
                        {"noise_ratio", c.compared ? c.comparison.noiseRatio : 0.0}}}});
   }
+  for (const CaseResult& c : summary.checks)  // beside the cases, with no points
+    tests.push_back({{"name", c.title},
+                     {"score", 0.0},
+                     {"max_score", 0.0},
+                     {"status", c.passed ? "passed" : "failed"},
+                     {"output", c.describe(settings)},
+                     {"visibility", "visible"},
+                     {"extra_data", {{"check", "warptest"}}}});
   const Json results = {{"score", points(summary.points())},
                         {"execution_time", std::round(summary.seconds * 10.0) / 10.0},
                         {"output", overall},

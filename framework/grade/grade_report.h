@@ -41,6 +41,10 @@ struct CaseResult {
 struct GradeSummary {
   std::string title;  // "Pathway grading: each stage on the reference's earlier stages"
   std::vector<CaseResult> cases;
+  // Checks beside the cases, with no points: the warp tests of the stages' sampling routines
+  // (docs/warptest.md). They say where a failing image's bug may sit; points(), maxPoints() and
+  // passed() count the cases alone.
+  std::vector<CaseResult> checks;
   std::vector<std::string> notes;  // submission-wide remarks (missing files, build output, ...)
   std::string sandbox;  // how student code was shut in while it ran (SandboxState::summary)
   double seconds = 0.0;

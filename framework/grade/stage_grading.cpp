@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <optional>
 #include <regex>
@@ -14,11 +15,13 @@
 
 #include "core/child_process.h"
 #include "core/error.h"
+#include "core/number_format.h"
 #include "core/regular_file_copy.h"
 #include "core/temporary_folder.h"
 #include "engine/pixel_in_progress.h"
 #include "grade/case_render_job.h"
 #include "grade/reference_comparison.h"
+#include "grade/stage_warp_test.h"
 #include "render/parameters.h"
 #include "stage_loading/reference_library.h"
 #include "stages/stage_catalog.h"
@@ -172,6 +175,79 @@ std::vector<RenderOutcome> renderInChildren(const std::vector<CaseRenderJob::Cas
     ++next;
   }
   return outcomes;
+}
+
+// The most a warp test's outcome may hold: a few lines of verdict.
+constexpr uintmax_t kWarpTestOutcomeBytes = 64 << 10;
+
+// The warp test of `stage`'s sampling routine (grade/stage_warp_test.h), run in a child of its own
+// as the cases are, as a check beside them: it carries no points, since the child that writes
+// its outcome runs the student's code (a stage could write "passed" itself).
+CaseResult warpTestInChild(int stage, const GradingRun& run, const std::string& workFolder,
+                           std::vector<std::string>* sandboxSeen) {
+  CaseResult result;
+  result.id = "stage" + std::to_string(stage) + "-warptest";
+  result.title = "Stage " + std::to_string(stage) + " · warp test (no points)";
+  result.purpose = stage == 2 ? "your sampleCosineHemisphere against your cosineHemispherePdf"
+                              : "your sampleLight's points against their pdfArea";
+  result.stage = stage;
+  CaseRenderJob job;
+  job.scenes = run.scenes;
+  job.seed = run.seed;
+  job.together = run.together;
+  job.gradeReference = run.gradeReference;
+  job.sandbox = run.sandbox;
+  job.referenceStages = CaseRenderJob::referenceStagesFor(stage, run.gradeReference, run.together);
+  if (!job.referenceStages.empty()) job.referenceFolder = referenceLibraryFolder();
+  job.reportsSandbox = true;
+  for (const std::string& library : run.stageLibraries)
+    job.stageLibraries.push_back(fs::absolute(library).string());
+  job.warpTestStage = stage;
+  job.output = workFolder + "/" + result.id;
+  const std::string log = job.output + ".log";
+  fs::remove_all(job.output);
+  fs::create_directory(job.output);
+  shareWithSandboxUser(job.output, run.sandbox);
+  ChildOptions options = untrustedChildOptions(run.sandbox != SandboxMode::Off);
+  options.reportChannel = true;
+  if (run.sandbox != SandboxMode::Off) options.folderQuotaBytes = kChildFolderQuotaBytes;
+  options.watchedFolder = job.output;
+  std::vector<std::string> command = {PATHWAY_CHILD_PROGRAM};
+  for (const std::string& argument : job.toArguments()) command.push_back(argument);
+  const ChildOutcome child =
+      runChild(command, CaseRenderJob::kWarpTestSeconds + kChildGraceSeconds, log, options);
+  if (sandboxSeen && !child.report.empty()) sandboxSeen->push_back(child.report);
+  const std::string path = job.warpTestPath();
+  std::error_code missing;
+  const fs::file_status status = fs::symlink_status(path, missing);
+  if (!missing && fs::is_regular_file(status) &&
+      fs::file_size(path, missing) <= kWarpTestOutcomeBytes && !missing) {
+    std::ifstream in(path, std::ios::binary);
+    std::string first, line, verdict;
+    std::getline(in, first);
+    while (std::getline(in, line)) verdict += (verdict.empty() ? "" : "\n") + line;
+    result.passed = first == "passed";
+    result.note = verdict;
+  }
+  if (result.note.empty()) {
+    result.passed = false;
+    // The child's own last line says why (a stage that is not there, a crash, a hang).
+    std::string said;
+    std::istringstream in(child.output);
+    for (std::string line; std::getline(in, line);)
+      if (!line.empty() && line.rfind("pathway: ", 0) != 0) said = line;
+    result.crashed = child.signal != 0 && child.signal != SIGALRM;
+    result.timedOut = child.timedOut || child.signal == SIGALRM;
+    result.problem =
+        "the warp test could not finish: your stage " +
+        (result.timedOut ? std::string("ran past its ") +
+                               formatNumber("%.0f", CaseRenderJob::kWarpTestSeconds) + " s"
+                         : child.describe(CaseRenderJob::kWarpTestSeconds)) +
+        (said.empty() ? "" : "; its last output: " + said);
+  }
+  std::error_code ignored;
+  fs::remove_all(job.output, ignored);
+  return result;
 }
 
 // Long enough for a correct stage on a slow machine, short enough that a stage stuck in a loop
@@ -348,6 +424,9 @@ GradeSummary gradeStages(const GradingRun& run, const ComparisonSettings& settin
       result.points = result.passed ? result.maxPoints : 0.0;
       summary.cases.push_back(std::move(result));
     }
+    const int stage = run.cases[first]->stage;
+    if (run.warpTests && hasWarpTest(stage))
+      summary.checks.push_back(warpTestInChild(stage, staged, work.path(), &sandboxSeen));
     first = end;
   }
   // What held, as the children said it from inside before any student code ran (the probe above

@@ -39,6 +39,9 @@ struct GradingRun {
   bool progress = true;  // one line per case on stderr
   // How the children shut themselves in before they load a stage (core/sandbox.h).
   SandboxMode sandbox = SandboxMode::Auto;
+  // After the cases of stages 2 and 5, their sampling routine's warp test, in a child of its own
+  // (grade/stage_warp_test.h): a check beside the cases, with no points (GradeSummary::checks).
+  bool warpTests = true;
 };
 
 // The points of case `index` of a stage's `count` cases: kPointsPerStage split into whole

@@ -142,7 +142,7 @@ void writeWarpTestSvg(const std::string& path, const WarpTestResult& result,
     std::ofstream out(temporary, std::ios::binary);
     out << text;
     out.close();
-    if (!out) throw PathwayError("cannot write the warp test picture '" + temporary + "'");
+    if (!out) throw PathwayError(temporary + ": cannot write the warp test picture");
   });
 }
 

@@ -63,7 +63,11 @@ const Stage2Functions& StageKit::stage2() const {
 
 const Stage5Functions& stage5Functions(Variant variant) {
   const auto& functions = provided(variant).stage5;
-  if (!functions) missing(5, variant);
+  if (!functions)
+    throw PathwayError(std::string("stage 5 (") + variantName(variant) +
+                       ") hands no light sampling on: is it built into this program, and does its "
+                       "file end with registerStage<PathTracer>(stage5(), "
+                       "Stage5Functions{sampleLight})?");
   return *functions;
 }
 
