@@ -140,17 +140,10 @@ TEST(LightSamplingFit, TheReferenceStage5Passes) {
 const char* const kLightSamplingBugs[] = {"s5_area_pdf_five_percent", "s5_area_pdf_two_percent",
                                           "s5_pdf_by_area_picked_by_power"};
 
-std::vector<test::Mutant> stage5Mutants() {
-  std::vector<test::Mutant> list;
-  for (const test::Mutant& mutant : test::mutants())
-    if (mutant.stage == 5) list.push_back(mutant);
-  return list;
-}
-
 TEST(LightSamplingFitMutants, TheListedRoutineBugsAreInTheSuite) {
   for (const char* name : kLightSamplingBugs) {
     bool found = false;
-    for (const test::Mutant& mutant : stage5Mutants()) found = found || mutant.name == name;
+    for (const test::Mutant& mutant : test::mutantsOfStage(5)) found = found || mutant.name == name;
     EXPECT_TRUE(found) << name << " is not a stage-5 mutant of " << PATHWAY_MUTANT_LIST;
   }
 }
@@ -177,7 +170,8 @@ TEST_P(LightSamplingFitMutant, FailsExactlyWhenItsPointsDisagreeWithTheirDensity
       ::testing::ExitedWithCode(isSamplingBug ? 1 : 0), "");
 }
 
-INSTANTIATE_TEST_SUITE_P(Stage5, LightSamplingFitMutant, ::testing::ValuesIn(stage5Mutants()),
+INSTANTIATE_TEST_SUITE_P(Stage5, LightSamplingFitMutant,
+                         ::testing::ValuesIn(test::mutantsOfStage(5)),
                          [](const ::testing::TestParamInfo<test::Mutant>& info) {
                            return info.param.name;
                          });

@@ -40,6 +40,14 @@ inline std::vector<Mutant> mutants() {
   return list;
 }
 
+// The planted bugs of one stage.
+inline std::vector<Mutant> mutantsOfStage(int stage) {
+  std::vector<Mutant> list;
+  for (const Mutant& mutant : mutants())
+    if (mutant.stage == stage) list.push_back(mutant);
+  return list;
+}
+
 inline void PrintTo(const Mutant& mutant, std::ostream* out) {
   *out << mutant.name << " (" << mutant.description << ")";
 }

@@ -159,17 +159,10 @@ TEST(WarpFit, TheReferenceStage2Passes) {
 const char* const kWarpBugs[] = {"s2_uniform_pdf", "s2_uniform_directions", "s2_pdf_three_percent",
                                  "s2_pdf_one_percent"};
 
-std::vector<test::Mutant> stage2Mutants() {
-  std::vector<test::Mutant> list;
-  for (const test::Mutant& mutant : test::mutants())
-    if (mutant.stage == 2) list.push_back(mutant);
-  return list;
-}
-
 TEST(WarpFitMutants, TheListedRoutineBugsAreInTheSuite) {
   for (const char* name : kWarpBugs) {
     bool found = false;
-    for (const test::Mutant& mutant : stage2Mutants()) found = found || mutant.name == name;
+    for (const test::Mutant& mutant : test::mutantsOfStage(2)) found = found || mutant.name == name;
     EXPECT_TRUE(found) << name << " is not a stage-2 mutant of " << PATHWAY_MUTANT_LIST;
   }
 }
@@ -193,7 +186,7 @@ TEST_P(WarpFitMutant, FailsExactlyWhenItsRoutineDisagreesWithItsPdf) {
       ::testing::ExitedWithCode(isWarpBug ? 1 : 0), "");
 }
 
-INSTANTIATE_TEST_SUITE_P(Stage2, WarpFitMutant, ::testing::ValuesIn(stage2Mutants()),
+INSTANTIATE_TEST_SUITE_P(Stage2, WarpFitMutant, ::testing::ValuesIn(test::mutantsOfStage(2)),
                          [](const ::testing::TestParamInfo<test::Mutant>& info) {
                            return info.param.name;
                          });

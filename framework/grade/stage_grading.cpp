@@ -86,6 +86,32 @@ constexpr uint64_t kChildFolderQuotaBytes = 256ull << 20;
 // with room to spare: an image that declares more is not read.
 constexpr size_t kCaseImageChannels = 256;
 
+// A child's job for `stage` of `run` with `seed`, before its cases, warp test and folder: where
+// its earlier stages come from, its libraries, its sandbox.
+CaseRenderJob childJob(const GradingRun& run, int stage, uint64_t seed) {
+  CaseRenderJob job;
+  job.scenes = run.scenes;
+  job.seed = seed;
+  job.together = run.together;
+  job.gradeReference = run.gradeReference;
+  job.singleRay = run.tracing == ReferenceTracing::SingleRay;
+  job.sandbox = run.sandbox;
+  job.referenceStages = CaseRenderJob::referenceStagesFor(stage, run.gradeReference, run.together);
+  if (!job.referenceStages.empty()) job.referenceFolder = referenceLibraryFolder();
+  job.reportsSandbox = true;
+  for (const std::string& library : run.stageLibraries)
+    job.stageLibraries.push_back(fs::absolute(library).string());
+  return job;
+}
+
+// How a child of `run` is started: untrusted, its sandbox's report read, its folder's size capped.
+ChildOptions childOptions(const GradingRun& run) {
+  ChildOptions options = untrustedChildOptions(run.sandbox != SandboxMode::Off);
+  options.reportChannel = true;
+  if (run.sandbox != SandboxMode::Off) options.folderQuotaBytes = kChildFolderQuotaBytes;
+  return options;
+}
+
 // Renders `cases` (each within its limit, all of one stage) with `seed` in as few child processes
 // as crashes and hangs allow: one child renders them all in order; when it stops early, the case it
 // was on fails and the cases after it go to a new child. Each child gets a folder of its own under
@@ -97,22 +123,8 @@ std::vector<RenderOutcome> renderInChildren(const std::vector<CaseRenderJob::Cas
                                             std::vector<std::string>* sandboxSeen = nullptr) {
   std::vector<RenderOutcome> outcomes(cases.size());
   if (cases.empty()) return outcomes;
-  CaseRenderJob job;
-  job.scenes = run.scenes;
-  job.seed = seed;
-  job.together = run.together;
-  job.gradeReference = run.gradeReference;
-  job.singleRay = run.tracing == ReferenceTracing::SingleRay;
-  job.sandbox = run.sandbox;
-  job.referenceStages = CaseRenderJob::referenceStagesFor(cases.front().gradingCase->stage,
-                                                          run.gradeReference, run.together);
-  if (!job.referenceStages.empty()) job.referenceFolder = referenceLibraryFolder();
-  job.reportsSandbox = true;
-  for (const std::string& library : run.stageLibraries)
-    job.stageLibraries.push_back(fs::absolute(library).string());
-  ChildOptions options = untrustedChildOptions(run.sandbox != SandboxMode::Off);
-  options.reportChannel = true;
-  if (run.sandbox != SandboxMode::Off) options.folderQuotaBytes = kChildFolderQuotaBytes;
+  CaseRenderJob job = childJob(run, cases.front().gradingCase->stage, seed);
+  ChildOptions options = childOptions(run);
   for (size_t next = 0; next < cases.size();) {
     job.cases.assign(cases.begin() + next, cases.end());
     double total = kChildGraceSeconds;
@@ -191,26 +203,14 @@ CaseResult warpTestInChild(int stage, const GradingRun& run, const std::string& 
   result.purpose = stage == 2 ? "your sampleCosineHemisphere against your cosineHemispherePdf"
                               : "your sampleLight's points against their pdfArea";
   result.stage = stage;
-  CaseRenderJob job;
-  job.scenes = run.scenes;
-  job.seed = run.seed;
-  job.together = run.together;
-  job.gradeReference = run.gradeReference;
-  job.sandbox = run.sandbox;
-  job.referenceStages = CaseRenderJob::referenceStagesFor(stage, run.gradeReference, run.together);
-  if (!job.referenceStages.empty()) job.referenceFolder = referenceLibraryFolder();
-  job.reportsSandbox = true;
-  for (const std::string& library : run.stageLibraries)
-    job.stageLibraries.push_back(fs::absolute(library).string());
+  CaseRenderJob job = childJob(run, stage, run.seed);
   job.warpTestStage = stage;
   job.output = workFolder + "/" + result.id;
   const std::string log = job.output + ".log";
   fs::remove_all(job.output);
   fs::create_directory(job.output);
   shareWithSandboxUser(job.output, run.sandbox);
-  ChildOptions options = untrustedChildOptions(run.sandbox != SandboxMode::Off);
-  options.reportChannel = true;
-  if (run.sandbox != SandboxMode::Off) options.folderQuotaBytes = kChildFolderQuotaBytes;
+  ChildOptions options = childOptions(run);
   options.watchedFolder = job.output;
   std::vector<std::string> command = {PATHWAY_CHILD_PROGRAM};
   for (const std::string& argument : job.toArguments()) command.push_back(argument);
