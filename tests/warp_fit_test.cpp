@@ -145,7 +145,8 @@ TEST(WarpPicture, WritesOnlyAnSvgFile) {
 
 TEST(WarpFit, TheReferenceStage2Passes) {
   PATHWAY_REQUIRE_REFERENCE();
-  const Stage2Functions& stage2 = StageKit(2, Variant::Reference, EarlierStages::Own).stage2();
+  const StageKit kit(2, Variant::Reference, EarlierStages::Own);
+  const Stage2Functions& stage2 = kit.stage2();
   const WarpTestResult r =
       testHemisphereWarp({stage2.sampleCosineHemisphere, stage2.cosineHemispherePdf}, {});
   EXPECT_TRUE(r.passed) << r.verdict;
@@ -177,7 +178,8 @@ TEST_P(WarpFitMutant, FailsExactlyWhenItsRoutineDisagreesWithItsPdf) {
   EXPECT_EXIT(
       {
         loadStageLibrary(mutant.library);
-        const Stage2Functions& stage2 = StageKit(2, Variant::Student, EarlierStages::Own).stage2();
+        const StageKit kit(2, Variant::Student, EarlierStages::Own);
+        const Stage2Functions& stage2 = kit.stage2();
         const WarpTestResult r =
             testHemisphereWarp({stage2.sampleCosineHemisphere, stage2.cosineHemispherePdf}, {});
         std::fprintf(stderr, "%s\n", r.verdict.c_str());

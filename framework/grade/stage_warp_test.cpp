@@ -17,7 +17,8 @@ StageWarpTest runStageWarpTest(int stage, Variant variant, const Scene* lights, 
                                uint64_t seed, bool keepDirections) {
   StageWarpTest outcome;
   if (stage == 2) {
-    const Stage2Functions& stage2 = StageKit(2, variant, EarlierStages::Own).stage2();
+    const StageKit kit(2, variant, EarlierStages::Own);
+    const Stage2Functions& stage2 = kit.stage2();
     WarpTestSettings settings;
     settings.samples = samples;
     settings.seed = seed;
