@@ -15,7 +15,7 @@ namespace pathway {
 
 // Stage 5's emitters: three lights of different sizes and strengths (six triangles).
 constexpr const char* kWarpTestScene = "grading_lights.gltf";
-// What the grader draws (and `pathway warptest` by default): 12 ms for stage 2, 40 for stage 5.
+// What the grader draws (and `pathway warptest` by default): 12 ms for stage 2, 20 for stage 5.
 constexpr int kWarpTestSamples = 200000;
 
 struct StageWarpTest {
